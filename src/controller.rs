@@ -1,0 +1,304 @@
+//! Controllers that turn the dynamic vector field into velocities (eqs. `eq_fully_controller`,
+//! `eq_nonholo_controller`, `eq_nonholo_controller_ob_avoid`, `eq_nonholo_controller_co_avoid`).
+//!
+//! [`command`] is the one call a robot needs: its pose, its goal, the obstacles and the
+//! neighbours it senses in, `(v, ω)` out.
+//!
+//! How the paper's three controllers combine (the paper gives them separately; Example 4 uses
+//! both kinds of avoidance at once): with `S = Π ς_i` over the obstacles and `ς_c` for the
+//! virtual obstacle (1 when there is none),
+//!
+//! ```text
+//! Γ_P = S Γ̃_d + Σ (1 − ς_i) Γ_oi                       (eq. VF_all_V3)
+//! Γ   = ς_c Γ_P + (1 − ς_c) Γ_ri⊥                        (eq. DVF_Gamma_Qi, with Γ_P for Γ̃_d)
+//! v   = k_v ς_c Γ_Pᴮˣ + (1 − ς_c) v_c                     (eq. nonholo_controller_co_avoid)
+//! ω   = −k_ω ς_c S θ̃ + k_a δ
+//! δ   = fade(|Γ|)·atan(Γᴮʸ/Γᴮˣ)   when ς_c = 1             (eq. nonholo_controller_ob_avoid)
+//!     = atan2(Γᴮʸ, Γᴮˣ)            when ς_c < 1             (eq. angle_delta_2)
+//! ```
+//!
+//! Each reduces to the paper's controller in the paper's setting: no obstacle and no
+//! neighbour gives eq. `eq_nonholo_controller`, obstacles only give
+//! eq. `eq_nonholo_controller_ob_avoid`, neighbours only give
+//! eq. `eq_nonholo_controller_co_avoid`.
+
+use crate::field::goal_field_body;
+use crate::obstacle::{blend, Obstacle};
+use crate::params::Params;
+use crate::se2::{heading, rotate, unrotate, Pose};
+use crate::swarm::{pair_range, tangent_field, virtual_obstacle};
+use glam::DVec2;
+
+/// Velocity inputs of a unicycle (eq. `eq_kine_nonho`).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Command {
+    /// Forward speed `v_x` along the heading (negative: backwards).
+    pub v: f64,
+    /// Angular velocity `ω` (rad/s, counter-clockwise positive).
+    pub omega: f64,
+}
+
+/// Everything the controller computed on the way to a [`Command`], for drawing and testing.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Evaluation {
+    /// The command, saturated when the parameters ask for it.
+    pub command: Command,
+    /// The blended field `Γ` in the world frame.
+    pub field: DVec2,
+    /// The obstacle-free goal field `Γ̃_d` in the world frame.
+    pub goal_field: DVec2,
+    /// `Π ς_i` over the obstacles (1: no obstacle influence).
+    pub obstacle_keep: f64,
+    /// `ς_c` of the virtual obstacle (1: not avoiding robots).
+    pub robot_keep: f64,
+    /// The virtual obstacle, when neighbours are within the avoidance range.
+    pub virtual_obstacle: Option<DVec2>,
+}
+
+/// `atan(y/x)` with the limits the ratio takes: `±π/2` for `x = 0`, and 0 for a zero vector.
+/// Range `[−π/2, π/2]`: the robot may drive backwards (MATH-NOTES §3).
+#[inline]
+#[must_use]
+pub fn atan_ratio(y: f64, x: f64) -> f64 {
+    if x == 0.0 {
+        if y == 0.0 {
+            0.0
+        } else {
+            std::f64::consts::FRAC_PI_2.copysign(y)
+        }
+    } else {
+        (y / x).atan()
+    }
+}
+
+/// The smooth fade `n²/(n² + g²)` of the alignment term for a field of magnitude `n`
+/// (MATH-NOTES §3). 1 far from the goal, → 0 as the field vanishes.
+#[inline]
+#[must_use]
+pub fn alignment_fade(n: f64, g: f64) -> f64 {
+    let n2 = n * n;
+    if n2 == 0.0 {
+        0.0
+    } else {
+        n2 / (n2 + g * g)
+    }
+}
+
+/// The fully actuated controller of eq. `eq_fully_controller`: body velocities
+/// `(v_x, v_y) = k_v Γ̃_dᴮ` and `ω = −k_ω θ̃` for the error pose `err`.
+#[inline]
+#[must_use]
+pub fn fully_actuated(params: &Params, err: Pose) -> (DVec2, f64) {
+    (
+        params.k_v * goal_field_body(err),
+        -params.k_omega * err.theta,
+    )
+}
+
+/// The command of a unicycle at `pose` with goal `goal`, sensing `obstacles` and the
+/// positions of its `neighbours` (what it senses: the caller applies the sensing radius).
+/// The heading error is taken on the principal branch.
+///
+/// ```
+/// use dvf::{command, Params, Pose};
+/// let cmd = command(&Params::default(), Pose::new(0.0, 0.0, 0.0), Pose::new(0.0, 40.0, 0.0), &[], &[]);
+/// assert!(cmd.omega > 0.0); // the goal is to the left: turn left
+/// ```
+#[must_use]
+pub fn command(
+    params: &Params,
+    pose: Pose,
+    goal: Pose,
+    obstacles: &[Obstacle],
+    neighbours: &[DVec2],
+) -> Command {
+    let err = pose.error_to(goal);
+    evaluate(params, pose, err, obstacles, neighbours.iter().copied()).command
+}
+
+/// The controller with the heading error `err.theta` on a branch of the caller's choice
+/// (see [`crate::se2::continue_branch`]); `err` is `pose.error_to(goal)` otherwise.
+#[must_use]
+pub fn evaluate<'a>(
+    params: &Params,
+    pose: Pose,
+    err: Pose,
+    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+    neighbours: impl IntoIterator<Item = DVec2>,
+) -> Evaluation {
+    let theta = pose.theta;
+    let eps = params.transition_width;
+    let goal_body = goal_field_body(err);
+    let goal_world = rotate(theta, goal_body);
+
+    // Direction of motion under the goal field: the heading, reversed when the robot would
+    // drive backwards (θ_r is measured against the motion, MATH-NOTES §4).
+    let motion = if goal_body.x < 0.0 {
+        -heading(theta)
+    } else {
+        heading(theta)
+    };
+    let (gp, keep_o) = blend(pose.p, motion, goal_world, obstacles, eps);
+
+    let range = pair_range(params.avoid_radius, eps);
+    let near = neighbours
+        .into_iter()
+        .filter(|q| q.distance_squared(pose.p) <= range * range);
+    let vo = virtual_obstacle(pose.p, near);
+    let keep_c = vo.map_or(1.0, |o| {
+        crate::obstacle::transition(pose.p.distance(o), params.avoid_radius, eps)
+    });
+
+    let gp_body = unrotate(theta, gp);
+    let (field, v, delta) = if keep_c < 1.0 {
+        let o = vo.unwrap_or(pose.p);
+        let t = tangent_field(pose.p, theta, o);
+        let field = keep_c * gp + (1.0 - keep_c) * t;
+        let fb = unrotate(theta, field);
+        let v = params.k_v * keep_c * gp_body.x + (1.0 - keep_c) * params.avoid_speed;
+        (field, v, fb.y.atan2(fb.x))
+    } else {
+        let fade = alignment_fade(gp_body.length(), params.align_fade);
+        (
+            gp,
+            params.k_v * gp_body.x,
+            fade * atan_ratio(gp_body.y, gp_body.x),
+        )
+    };
+    let omega = -params.k_omega * keep_c * keep_o * err.theta + params.k_a * delta;
+
+    Evaluation {
+        command: saturate(params, Command { v, omega }),
+        field,
+        goal_field: goal_world,
+        obstacle_keep: keep_o,
+        robot_keep: keep_c,
+        virtual_obstacle: vo.filter(|_| keep_c < 1.0),
+    }
+}
+
+/// Applies `|v| ≤ v_max` and `|ω| ≤ ω_max` when they are set.
+#[inline]
+#[must_use]
+pub fn saturate(params: &Params, c: Command) -> Command {
+    Command {
+        v: params.v_max.map_or(c.v, |m| c.v.clamp(-m, m)),
+        omega: params.omega_max.map_or(c.omega, |m| c.omega.clamp(-m, m)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::se2::log;
+    use std::f64::consts::{FRAC_PI_2, PI};
+
+    #[test]
+    fn atan_ratio_limits() {
+        assert_eq!(atan_ratio(1.0, 0.0), FRAC_PI_2);
+        assert_eq!(atan_ratio(-1.0, 0.0), -FRAC_PI_2);
+        assert_eq!(atan_ratio(0.0, 0.0), 0.0);
+        // Backwards: the angle of the line, not of the ray.
+        assert!((atan_ratio(1.0, -1.0) + PI / 4.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn fade_is_one_far_and_zero_at_the_goal() {
+        assert_eq!(alignment_fade(0.0, 1e-3), 0.0);
+        assert!(alignment_fade(1.0, 1e-3) > 1.0 - 1e-6);
+        assert!((alignment_fade(1e-3, 1e-3) - 0.5).abs() < 1e-15);
+    }
+
+    /// The fully actuated loop (eq. `eq_fully_controller`) makes the Lyapunov function
+    /// Φ = ½⟨Υ̃, Υ̃⟩ decrease at every step (proof of Theorem 1), from poses on both sides of
+    /// ±π and with unequal gains.
+    #[test]
+    fn lyapunov_decreases_under_the_fully_actuated_loop() {
+        for params in [
+            Params::default(),
+            Params {
+                k_v: 1.0,
+                k_omega: 1.0,
+                ..Params::default()
+            },
+        ] {
+            for start in [
+                Pose::new(0.0, 40.0, 0.0),
+                Pose::new(-30.0, 10.0, 3.0),
+                Pose::new(12.0, -7.0, -3.1),
+            ] {
+                let goal = Pose::new(2.0, 1.0, 0.5);
+                let mut h = start;
+                let initial = log(h.error_to(goal)).lyapunov();
+                let mut prev = initial;
+                let dt = 1e-3;
+                for _ in 0..20_000 {
+                    let err = h.error_to(goal);
+                    let (vb, w) = fully_actuated(&params, err);
+                    // Exact integration of a constant body twist over dt: h ← h·exp(dt·η).
+                    h = h.compose(crate::se2::exp(crate::se2::Twist {
+                        phi: dt * vb,
+                        theta: dt * w,
+                    }));
+                    let now = log(h.error_to(goal)).lyapunov();
+                    assert!(now <= prev, "Φ rose from {prev} to {now}");
+                    prev = now;
+                }
+                // Φ decays at least like e^{−2·min(k_v, k_ω)·t}: after 20 s at k_v = 0.5 that
+                // is e^{−20} ≈ 2e-9 of the start; 1e-6 leaves room for the transient.
+                assert!(prev < 1e-6 * initial, "Φ ended at {prev} from {initial}");
+            }
+        }
+    }
+
+    #[test]
+    fn saturation_clamps_when_set() {
+        let p = Params {
+            v_max: Some(2.0),
+            omega_max: Some(0.5),
+            ..Params::default()
+        };
+        let c = saturate(
+            &p,
+            Command {
+                v: -7.0,
+                omega: 3.0,
+            },
+        );
+        assert_eq!(
+            c,
+            Command {
+                v: -2.0,
+                omega: 0.5
+            }
+        );
+        let c = saturate(
+            &Params::default(),
+            Command {
+                v: -7.0,
+                omega: 3.0,
+            },
+        );
+        assert_eq!(
+            c,
+            Command {
+                v: -7.0,
+                omega: 3.0
+            }
+        );
+    }
+
+    /// Inside the avoidance ring the robot drives at v_c and steers along Γ_ri⊥.
+    #[test]
+    fn inside_the_ring_the_speed_is_common() {
+        let p = Params::default();
+        let pose = Pose::new(0.0, 0.0, 0.0);
+        let goal = Pose::new(50.0, 0.0, 0.0);
+        let e = evaluate(&p, pose, pose.error_to(goal), [], [DVec2::new(1.0, 0.0)]);
+        assert_eq!(e.robot_keep, 0.0);
+        assert_eq!(e.command.v, p.avoid_speed);
+        assert_eq!(e.virtual_obstacle, Some(DVec2::new(0.5, 0.0)));
+        // Heading straight at the neighbour: turn left (positive ω).
+        assert!(e.command.omega > 0.0);
+    }
+}

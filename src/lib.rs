@@ -1,0 +1,25 @@
+#![doc = include_str!("../README.md")]
+#![warn(missing_docs)]
+
+#[doc(hidden)]
+pub mod approx;
+pub mod controller;
+pub mod error;
+pub mod field;
+pub mod obstacle;
+pub mod params;
+pub mod presets;
+pub mod scenario;
+pub mod se2;
+pub mod sim;
+pub mod swarm;
+#[cfg(target_arch = "wasm32")]
+pub mod wasm;
+
+pub use controller::{command, Command};
+pub use error::Error;
+pub use obstacle::Obstacle;
+pub use params::Params;
+pub use scenario::Scenario;
+pub use se2::Pose;
+pub use sim::{run, Report, Simulation};

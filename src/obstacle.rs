@@ -1,0 +1,205 @@
+//! Circular obstacles and their avoidance field (Section IV, eqs. `eq_Gamma_r_ob_avoid`,
+//! `eq_Gamma_r_perp_ob_avoid`, `eq_ob_avoid_VF`, `eq_switch_func`, `eq_VF_all_V3`).
+//!
+//! Around an obstacle of radius `r_o` the ring `r_o < d ≤ R_o` carries a circular field
+//! `Γ_r⊥` tangent to the circles about the obstacle; a transition `ς` of width `ε` blends it
+//! with the goal field between `R_o` and `R_o + ε`.
+
+use glam::DVec2;
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// A circular obstacle.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Obstacle {
+    /// Centre `p_o` (world frame).
+    pub center: DVec2,
+    /// Radius `r_o > 0` of the disc the robots must stay out of.
+    pub radius: f64,
+    /// Radius `R_o > r_o` of the influence ring inside which the circular field acts.
+    pub influence: f64,
+}
+
+impl Obstacle {
+    /// Distance from `p` to the obstacle's surface (negative inside).
+    #[inline]
+    #[must_use]
+    pub fn clearance(&self, p: DVec2) -> f64 {
+        p.distance(self.center) - self.radius
+    }
+}
+
+/// The transition function `ς` of eq. `eq_switch_func`: 0 for `d < R`, 1 for `d > R + ε`,
+/// and `½ sin(π(d − R)/ε − π/2) + ½` in between. Continuous and non-decreasing in `d`, with a
+/// zero slope at both ends of the band. `eps > 0`.
+#[inline]
+#[must_use]
+pub fn transition(d: f64, big_r: f64, eps: f64) -> f64 {
+    if d < big_r {
+        0.0
+    } else if d > big_r + eps {
+        1.0
+    } else {
+        0.5 * ((d - big_r) / eps * PI - 0.5 * PI).sin() + 0.5
+    }
+}
+
+/// The angle `θ_r ∈ [0, π]` between the direction of motion `motion` and the direction from
+/// the robot to the obstacle `−Γ_r` (Section IV). `motion` is the heading times the sign of
+/// the forward speed: the robot may drive backwards.
+#[inline]
+#[must_use]
+pub fn approach_angle(motion: DVec2, gamma_r: DVec2) -> f64 {
+    let c = motion.dot(-gamma_r) / (motion.length() * gamma_r.length());
+    c.clamp(-1.0, 1.0).acos()
+}
+
+/// Which case of eq. `eq_ob_avoid_VF` applies.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Approach {
+    /// `θ_r ≥ π/2`: moving away from the obstacle, the goal field is kept.
+    Clear,
+    /// `0 < θ_r < π/2`: `Γ_r⊥` projected positively on the motion.
+    Tangent,
+    /// `θ_r = 0`: straight at the obstacle; `Γ_r` turned clockwise by π/2.
+    HeadOn,
+}
+
+/// Classifies the approach by signs rather than by `acos`, so that the exact cases `θ_r = π/2`
+/// and `θ_r = 0` are decided without round-off.
+#[inline]
+#[must_use]
+pub fn classify(motion: DVec2, gamma_r: DVec2) -> Approach {
+    if motion.dot(-gamma_r) <= 0.0 {
+        Approach::Clear
+    } else if gamma_r.perp().dot(motion) == 0.0 {
+        Approach::HeadOn
+    } else {
+        Approach::Tangent
+    }
+}
+
+/// The obstacle avoidance field `Γ_o` of eq. `eq_ob_avoid_VF` for a robot at relative position
+/// `gamma_r = p − p_o` (eq. `eq_Gamma_r_ob_avoid`), moving along `motion`, whose goal field is
+/// `goal_field` (world frame).
+///
+/// `Γ_r⊥ = ±R(π/2)Γ_r` (eq. `eq_Gamma_r_perp_ob_avoid`) has the length `d = |Γ_r|`.
+#[inline]
+#[must_use]
+pub fn avoidance_field(gamma_r: DVec2, motion: DVec2, goal_field: DVec2) -> DVec2 {
+    let ccw = gamma_r.perp(); // R(π/2)Γ_r
+    match classify(motion, gamma_r) {
+        Approach::Clear => goal_field,
+        Approach::Tangent if ccw.dot(motion) > 0.0 => ccw,
+        Approach::Tangent => -ccw,
+        Approach::HeadOn => -ccw, // R(π/2)ᵀΓ_r: clockwise
+    }
+}
+
+/// The blend of eq. `eq_VF_all_V3` over the sensed obstacles:
+/// `Γ_P = (Π ς_i) Γ̃_d + Σ (1 − ς_i) Γ_oi`. Returns `(Γ_P, Π ς_i)`; the product also scales the
+/// attitude feedback of eq. `eq_nonholo_controller_ob_avoid`.
+#[must_use]
+pub fn blend<'a>(
+    p: DVec2,
+    motion: DVec2,
+    goal_field: DVec2,
+    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+    eps: f64,
+) -> (DVec2, f64) {
+    let mut keep = 1.0;
+    let mut sum = DVec2::ZERO;
+    for o in obstacles {
+        let gamma_r = p - o.center;
+        let s = transition(gamma_r.length(), o.influence, eps);
+        if s < 1.0 {
+            keep *= s;
+            sum += (1.0 - s) * avoidance_field(gamma_r, motion, goal_field);
+        }
+    }
+    (keep * goal_field + sum, keep)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::approx::assert_close;
+
+    #[test]
+    fn transition_limits_and_continuity() {
+        let (r, e) = (3.0, 0.5);
+        assert_eq!(transition(2.9, r, e), 0.0);
+        assert_eq!(transition(3.0, r, e), 0.0);
+        assert_close!(transition(3.25, r, e), 0.5, 1e-15);
+        assert_close!(transition(3.5, r, e), 1.0, 1e-15);
+        assert_eq!(transition(3.6, r, e), 1.0);
+        // Continuity: a fine sweep never jumps by more than the steepest slope allows
+        // (π/(2ε) per unit distance) and never decreases.
+        let mut prev = transition(2.8, r, e);
+        for k in 1..=1000 {
+            let d = 2.8 + k as f64 * 1e-3;
+            let s = transition(d, r, e);
+            assert!(s >= prev);
+            assert!(s - prev <= PI / (2.0 * e) * 1e-3 + 1e-12, "jump at {d}");
+            prev = s;
+        }
+    }
+
+    #[test]
+    fn three_cases_of_theta_r() {
+        // Robot at (0, 2) relative to the obstacle.
+        let gamma_r = DVec2::new(0.0, 2.0);
+        let goal = DVec2::new(7.0, 7.0);
+        // Case 1: moving away (θ_r = π) and tangentially (θ_r = π/2) keeps the goal field.
+        assert_eq!(classify(DVec2::Y, gamma_r), Approach::Clear);
+        assert_eq!(classify(DVec2::X, gamma_r), Approach::Clear);
+        assert_eq!(avoidance_field(gamma_r, DVec2::X, goal), goal);
+        assert_close!(approach_angle(DVec2::X, gamma_r), PI / 2.0, 1e-15);
+        // Case 2: approaching obliquely: tangent with positive projection on the motion.
+        let m = DVec2::new(1.0, -1.0);
+        assert_eq!(classify(m, gamma_r), Approach::Tangent);
+        let f = avoidance_field(gamma_r, m, goal);
+        assert_eq!(f.dot(gamma_r), 0.0);
+        assert!(f.dot(m) > 0.0);
+        assert_close!(f.length(), 2.0, 1e-15);
+        let f = avoidance_field(gamma_r, DVec2::new(-1.0, -1.0), goal);
+        assert!(f.dot(DVec2::new(-1.0, -1.0)) > 0.0);
+        // Case 3: straight at it: Γ_r turned clockwise by π/2 = (2, 0).
+        assert_eq!(classify(-DVec2::Y, gamma_r), Approach::HeadOn);
+        assert_eq!(
+            avoidance_field(gamma_r, -DVec2::Y, goal),
+            DVec2::new(2.0, 0.0)
+        );
+        assert_eq!(approach_angle(-DVec2::Y, gamma_r), 0.0);
+    }
+
+    /// Along the circular field the distance to the obstacle is constant (proof of Theorem 3):
+    /// d/dt |p − p_o|² = 2Γ_rᵀΓ_o = 0.
+    #[test]
+    fn circular_field_is_tangent() {
+        for k in 0..36 {
+            let a = k as f64 * 10f64.to_radians();
+            let gamma_r = 2.5 * DVec2::from_angle(a);
+            let m = DVec2::from_angle(a + 2.0); // approaching
+            let f = avoidance_field(gamma_r, m, DVec2::ZERO);
+            assert_close!(f.dot(gamma_r), 0.0, 1e-12);
+        }
+    }
+
+    #[test]
+    fn blend_far_away_is_the_goal_field() {
+        let o = Obstacle {
+            center: DVec2::ZERO,
+            radius: 1.0,
+            influence: 2.0,
+        };
+        let g = DVec2::new(-3.0, 1.0);
+        let (f, keep) = blend(DVec2::new(10.0, 0.0), -DVec2::X, g, [&o], 0.5);
+        assert_eq!((f, keep), (g, 1.0));
+        // Inside the ring, approaching: purely tangential, attitude feedback off.
+        let (f, keep) = blend(DVec2::new(1.5, 0.0), DVec2::new(-1.0, 0.2), g, [&o], 0.5);
+        assert_eq!(keep, 0.0);
+        assert_close!(f.x, 0.0, 1e-15);
+    }
+}

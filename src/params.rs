@@ -1,0 +1,67 @@
+//! The method's parameters, with the defaults in one place.
+//!
+//! The paper leaves every number open (MATH-NOTES §6). The defaults below make all four of its
+//! examples work (the presets in [`crate::presets`] use them unless they say otherwise), and
+//! satisfy the two conditions the controller needs to converge from any pose:
+//! `k_a > 2·k_ω` (no spurious equilibrium where the field is perpendicular to the heading) and
+//! `k_ω ≥ k_v` (the attitude loop no slower than the position loop).
+
+use serde::{Deserialize, Serialize};
+
+/// Parameters of the field and the controller (the scenario file's `params` object).
+/// Lengths in scenario units, angles in radians, times in seconds.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// `k_v > 0`: gain of the forward speed on the field (eq. `eq_nonholo_controller`). 1/s.
+    pub k_v: f64,
+    /// `k_ω > 0`: gain of the attitude feedback `−k_ω θ̃`. 1/s.
+    pub k_omega: f64,
+    /// `k_a > 0`: gain of the alignment term `k_a·atan(Γᴮʸ/Γᴮˣ)`. 1/s.
+    pub k_a: f64,
+    /// `ε > 0`: width of the transition band of `ς` (eq. `eq_switch_func`).
+    pub transition_width: f64,
+    /// `v_c > 0`: the common speed of robots circling a virtual obstacle
+    /// (eq. `eq_nonholo_controller_co_avoid`).
+    pub avoid_speed: f64,
+    /// `R_c`: radius of the avoidance ring about a virtual obstacle; robots closer than
+    /// `2(R_c + ε)` start avoiding each other.
+    pub avoid_radius: f64,
+    /// `r_ij`: a robot's safe radius; two robots closer than `2·r_ij` count as a collision.
+    pub safe_radius: f64,
+    /// `R_s`: sensing radius. A robot knows the robots within `R_s` and the obstacles whose
+    /// surface is within `R_s`.
+    pub sense_radius: f64,
+    /// `|v| ≤ v_max` when set (off by default, as in the paper).
+    pub v_max: Option<f64>,
+    /// `|ω| ≤ ω_max` when set (off by default).
+    pub omega_max: Option<f64>,
+    /// A robot has converged when its position error is at most this.
+    pub tol_position: f64,
+    /// … and its heading error at most this (rad).
+    pub tol_heading: f64,
+    /// `g`: field magnitude below which the alignment term fades out, as
+    /// `k_a·|Γ|²/(|Γ|² + g²)·atan(Γᴮʸ/Γᴮˣ)` (MATH-NOTES §3: at the goal the direction of a
+    /// vanishing field is round-off). Length/s. Not in the paper.
+    pub align_fade: f64,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Self {
+            k_v: 0.5,
+            k_omega: 1.0,
+            k_a: 10.0,
+            transition_width: 1.0,
+            avoid_speed: 2.0,
+            avoid_radius: 3.0,
+            safe_radius: 1.0,
+            sense_radius: 20.0,
+            v_max: None,
+            omega_max: None,
+            tol_position: 0.05,
+            tol_heading: 0.02,
+            align_fade: 1e-3,
+        }
+    }
+}

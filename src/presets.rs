@@ -1,0 +1,236 @@
+//! The paper's four examples (Section VI) as scenarios, shared by the command line and the
+//! browser. Where the paper gives numbers they are used as printed; where it does not
+//! (obstacle positions in Example 2, the formations of Examples 3 and 4) the choice is stated
+//! on the preset.
+
+use crate::error::Error;
+use crate::obstacle::Obstacle;
+use crate::params::Params;
+use crate::scenario::{RobotSpec, Scenario};
+use glam::DVec2;
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// A named preset.
+#[derive(Clone, Copy, Debug)]
+pub struct Preset {
+    /// The name used on the command line and in the page (`--preset NAME`).
+    pub name: &'static str,
+    /// One line on what it shows.
+    pub summary: &'static str,
+    build: fn() -> Scenario,
+}
+
+impl Preset {
+    /// The scenario.
+    #[must_use]
+    pub fn scenario(&self) -> Scenario {
+        (self.build)()
+    }
+}
+
+/// Every preset, the default first.
+pub const PRESETS: &[Preset] = &[
+    Preset {
+        name: "example4-obstacle-formation",
+        summary: "Example 4: ten robots pass an obstacle (r_o = 5, R_o = 10) into a line formation, r_ij = 5, T = 25 s",
+        build: example4,
+    },
+    Preset {
+        name: "table1-free-space",
+        summary: "Example 1 / Table I: six goals from (0, 0, 0) in free space, each an independent run, 60 s",
+        build: table1,
+    },
+    Preset {
+        name: "table2-obstacles",
+        summary: "Example 2 / Table II: three starts to (0, 0, 0) around obstacles r_o = 1.5, R_o = 3, T = 20 s",
+        build: table2,
+    },
+    Preset {
+        name: "example3-line-swap",
+        summary: "Example 3, scenario 1: five robots from one line formation to another, orientations kept, T = 15 s",
+        build: example3_line,
+    },
+    Preset {
+        name: "example3-circle-swap",
+        summary: "Example 3, scenario 2: six robots swap antipodally on a circle, orientations kept, T = 15 s",
+        build: example3_circle,
+    },
+];
+
+/// The preset shown when nothing else is asked for.
+pub const DEFAULT_PRESET: &str = "example4-obstacle-formation";
+
+/// Looks a preset up by name.
+///
+/// # Errors
+/// [`Error::UnknownPreset`] listing the names that exist.
+pub fn preset(name: &str) -> Result<Scenario, Error> {
+    PRESETS
+        .iter()
+        .find(|p| p.name == name)
+        .map(Preset::scenario)
+        .ok_or_else(|| Error::UnknownPreset {
+            name: name.to_owned(),
+            available: PRESETS
+                .iter()
+                .map(|p| p.name)
+                .collect::<Vec<_>>()
+                .join(", "),
+        })
+}
+
+fn robot(start: [f64; 3], goal: [f64; 3]) -> RobotSpec {
+    RobotSpec { start, goal }
+}
+
+/// Table I: from `(0, 0, 0)` to six goals. The robots are independent runs (the paper's
+/// Example 1 is one robot under six goals), drawn together.
+fn table1() -> Scenario {
+    let goals = [
+        [0.0, 40.0, 0.0],
+        [40.0, 40.0, FRAC_PI_2],
+        [40.0, 0.0, -FRAC_PI_2],
+        [40.0, -40.0, 0.0],
+        [-20.0, -40.0, -FRAC_PI_2],
+        [-40.0, 0.0, PI],
+    ];
+    Scenario {
+        name: "Table I: motion planning in free space".into(),
+        bounds: Some([-55.0, -55.0, 55.0, 55.0]),
+        duration: 60.0,
+        dt: 0.01,
+        params: Params::default(),
+        independent: true,
+        robots: goals.iter().map(|g| robot([0.0, 0.0, 0.0], *g)).collect(),
+        obstacles: vec![],
+    }
+}
+
+/// Table II: three starts to `(0, 0, 0)`, `r_o = 1.5`, `R_o = 3`, `T = 20 s`. The paper does
+/// not give the obstacle positions; each obstacle here sits on the obstacle-free path of one
+/// robot (found by simulating without obstacles), so that every robot has to go around one.
+fn table2() -> Scenario {
+    let starts = [[0.0, 30.0, 0.0], [-30.0, 30.0, FRAC_PI_2], [-35.0, 0.0, PI]];
+    let obstacle = |x: f64, y: f64| Obstacle {
+        center: DVec2::new(x, y),
+        radius: 1.5,
+        influence: 3.0,
+    };
+    Scenario {
+        name: "Table II: motion planning with obstacle avoidance".into(),
+        bounds: Some([-45.0, -15.0, 15.0, 40.0]),
+        duration: 20.0,
+        dt: 0.01,
+        params: Params::default(),
+        independent: true,
+        robots: starts.iter().map(|s| robot(*s, [0.0, 0.0, 0.0])).collect(),
+        obstacles: TABLE2_OBSTACLES
+            .iter()
+            .map(|&[x, y]| obstacle(x, y))
+            .collect(),
+    }
+}
+
+/// Obstacle centres of the Table II preset: points on each robot's obstacle-free path
+/// (see the test `table2_obstacles_block_the_free_paths`).
+pub const TABLE2_OBSTACLES: [[f64; 2]; 3] = [[0.0, 15.0], [-15.0, 15.0], [-17.0, 0.0]];
+
+/// Example 3, scenario 1: five robots in a column at `x = −20` heading east swap to a column
+/// at `x = 20` in reverse order, keeping their heading: every path crosses the others near
+/// the middle.
+fn example3_line() -> Scenario {
+    let ys = [-20.0, -10.0, 0.0, 10.0, 20.0];
+    Scenario {
+        name: "Example 3: line to line with collision avoidance".into(),
+        bounds: Some([-30.0, -30.0, 30.0, 30.0]),
+        duration: 15.0,
+        dt: 0.01,
+        params: Params::default(),
+        independent: false,
+        robots: ys
+            .iter()
+            .map(|&y| robot([-20.0, y, 0.0], [20.0, -y, 0.0]))
+            .collect(),
+        obstacles: vec![],
+    }
+}
+
+/// Example 3, scenario 2: six robots on a circle of radius 20, each facing the centre, swap
+/// with the antipodal robot and end with their initial orientation.
+fn example3_circle() -> Scenario {
+    let n = 6;
+    let robots = (0..n)
+        .map(|k| {
+            let a = 2.0 * PI * k as f64 / n as f64;
+            let p = 20.0 * DVec2::from_angle(a);
+            let facing = crate::se2::wrap_angle(a + PI);
+            robot([p.x, p.y, facing], [-p.x, -p.y, facing])
+        })
+        .collect();
+    Scenario {
+        name: "Example 3: antipodal swap on a circle".into(),
+        bounds: Some([-30.0, -30.0, 30.0, 30.0]),
+        duration: 15.0,
+        dt: 0.01,
+        params: Params::default(),
+        independent: false,
+        robots,
+        obstacles: vec![],
+    }
+}
+
+/// Example 4: ten robots, an obstacle with `r_o = 5`, `R_o = 10`, safe radius `r_ij = 5`,
+/// `T = 25 s`. The robots start in two columns of five on the left, facing east, and end in
+/// one line formation on the right facing north; the obstacle sits between them.
+fn example4() -> Scenario {
+    let params = Params {
+        safe_radius: 5.0,
+        avoid_radius: 8.0,
+        sense_radius: 40.0,
+        transition_width: 2.0,
+        ..Params::default()
+    };
+    let robots = (0..10)
+        .map(|k| {
+            let col = (k / 5) as f64;
+            let row = (k % 5) as f64;
+            let start = [-80.0 - 25.0 * col, -50.0 + 25.0 * row, 0.0];
+            let goal = [60.0, -67.5 + 15.0 * k as f64, FRAC_PI_2];
+            robot(start, goal)
+        })
+        .collect();
+    Scenario {
+        name: "Example 4: obstacle and collision avoidance into a line".into(),
+        bounds: Some([-120.0, -85.0, 90.0, 85.0]),
+        duration: 25.0,
+        dt: 0.01,
+        params,
+        independent: false,
+        robots,
+        obstacles: vec![Obstacle {
+            center: DVec2::new(-10.0, 0.0),
+            radius: 5.0,
+            influence: 10.0,
+        }],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_is_valid_and_named_uniquely() {
+        for (k, p) in PRESETS.iter().enumerate() {
+            p.scenario()
+                .validate()
+                .unwrap_or_else(|e| panic!("{}: {e}", p.name));
+            assert!(PRESETS[k + 1..].iter().all(|q| q.name != p.name));
+        }
+        assert!(preset(DEFAULT_PRESET).is_ok());
+        assert!(preset("nope")
+            .unwrap_err()
+            .to_string()
+            .contains("table1-free-space"));
+    }
+}
