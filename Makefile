@@ -1,0 +1,32 @@
+# Quick start: `make serve` builds the wasm package and serves the page; `make test` runs every test.
+PORT ?= 8080
+export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
+
+.PHONY: serve build-wasm test lint test-native test-browser test-e2e tools
+
+tools:
+	bash .ci/install
+
+# Release build of the wasm package into www/pkg (wasm-opt from npm's binaryen, see .ci/install).
+build-wasm: tools
+	wasm-pack build --release --target web --out-dir www/pkg --no-typescript
+
+serve: build-wasm
+	@echo "dvf playground: http://127.0.0.1:$(PORT)/"
+	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
+
+lint:
+	cargo fmt --check
+	cargo clippy --all-targets -- -D warnings
+	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps
+
+test-native:
+	cargo test
+
+test-browser: tools
+	wasm-pack test --headless --chrome
+
+test-e2e: build-wasm
+	node tests/e2e/smoke.mjs
+
+test: tools lint test-native test-browser test-e2e
