@@ -26,7 +26,7 @@ use crate::field::goal_field_body;
 use crate::obstacle::{blend, Obstacle};
 use crate::params::Params;
 use crate::se2::{heading, rotate, unrotate, Pose};
-use crate::swarm::{pair_range, tangent_field, virtual_obstacle};
+use crate::swarm::{cluster, pair_range, tangent_field, Approach};
 use glam::DVec2;
 
 /// Velocity inputs of a unicycle (eq. `eq_kine_nonho`).
@@ -141,17 +141,25 @@ pub fn evaluate<'a>(
     let (gp, keep_o) = blend(pose.p, motion, goal_world, obstacles, eps);
 
     let range = pair_range(params.avoid_radius, eps);
-    let near = neighbours
-        .into_iter()
-        .filter(|q| q.distance_squared(pose.p) <= range * range);
-    let vo = virtual_obstacle(pose.p, near);
-    let keep_c = vo.map_or(1.0, |o| {
-        crate::obstacle::transition(pose.p.distance(o), params.avoid_radius, eps)
+    let me = Approach {
+        position: pose.p,
+        motion,
+        to_goal: err.p.length(),
+    };
+    let vo = cluster(
+        me,
+        neighbours,
+        range,
+        2.0 * params.safe_radius,
+        params.avoidance,
+    );
+    let keep_c = vo.map_or(1.0, |c| {
+        crate::obstacle::transition(c.distance, params.avoid_radius, eps)
     });
 
     let gp_body = unrotate(theta, gp);
     let (field, v, delta) = if keep_c < 1.0 {
-        let o = vo.unwrap_or(pose.p);
+        let o = vo.map_or(pose.p, |c| c.center);
         let t = tangent_field(pose.p, theta, o);
         let field = keep_c * gp + (1.0 - keep_c) * t;
         let fb = unrotate(theta, field);
@@ -173,7 +181,7 @@ pub fn evaluate<'a>(
         goal_field: goal_world,
         obstacle_keep: keep_o,
         robot_keep: keep_c,
-        virtual_obstacle: vo.filter(|_| keep_c < 1.0),
+        virtual_obstacle: vo.map(|c| c.center).filter(|_| keep_c < 1.0),
     }
 }
 

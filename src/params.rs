@@ -8,6 +8,21 @@
 
 use serde::{Deserialize, Serialize};
 
+/// How robots avoid each other (Section V).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Avoidance {
+    /// As the paper writes it: inside the avoidance range a robot always blends in the
+    /// circular field of the virtual obstacle. Robots that enter each other's ring can circle
+    /// forever (MATH-NOTES §5).
+    Paper,
+    /// The paper's field with the exit the obstacle field already has (eq. `eq_ob_avoid_VF`,
+    /// case `θ_r ≥ π/2`): a robot whose motion under its goal field leads away from the virtual
+    /// obstacle follows its goal field; only a robot that would approach the cluster circles it.
+    #[default]
+    Exit,
+}
+
 /// Parameters of the field and the controller (the scenario file's `params` object).
 /// Lengths in scenario units, angles in radians, times in seconds.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -44,12 +59,14 @@ pub struct Params {
     /// `k_a·|Γ|²/(|Γ|² + g²)·atan(Γᴮʸ/Γᴮˣ)` (MATH-NOTES §3: at the goal the direction of a
     /// vanishing field is round-off). Length/s. Not in the paper.
     pub align_fade: f64,
+    /// `"exit"` (default) or `"paper"`: see [`Avoidance`].
+    pub avoidance: Avoidance,
 }
 
 impl Default for Params {
     fn default() -> Self {
         Self {
-            k_v: 0.5,
+            k_v: 1.0,
             k_omega: 1.0,
             k_a: 10.0,
             transition_width: 1.0,
@@ -62,6 +79,7 @@ impl Default for Params {
             tol_position: 0.05,
             tol_heading: 0.02,
             align_fade: 1e-3,
+            avoidance: Avoidance::Exit,
         }
     }
 }

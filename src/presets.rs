@@ -133,7 +133,7 @@ fn table2() -> Scenario {
 
 /// Obstacle centres of the Table II preset: points on each robot's obstacle-free path
 /// (see the test `table2_obstacles_block_the_free_paths`).
-pub const TABLE2_OBSTACLES: [[f64; 2]; 3] = [[0.0, 15.0], [-15.0, 15.0], [-17.0, 0.0]];
+pub const TABLE2_OBSTACLES: [[f64; 2]; 3] = [[-9.2, 14.0], [-18.0, 13.0], [-19.6, 4.1]];
 
 /// Example 3, scenario 1: five robots in a column at `x = −20` heading east swap to a column
 /// at `x = 20` in reverse order, keeping their heading: every path crosses the others near
@@ -180,28 +180,29 @@ fn example3_circle() -> Scenario {
 }
 
 /// Example 4: ten robots, an obstacle with `r_o = 5`, `R_o = 10`, safe radius `r_ij = 5`,
-/// `T = 25 s`. The robots start in two columns of five on the left, facing east, and end in
-/// one line formation on the right facing north; the obstacle sits between them.
+/// `T = 25 s`. The robots start in two columns of five on the left, facing east, and end side
+/// by side in one line formation on the right, all facing east; the obstacle sits between
+/// them, on the paths of the middle robots.
 fn example4() -> Scenario {
     let params = Params {
         safe_radius: 5.0,
-        avoid_radius: 8.0,
-        sense_radius: 40.0,
-        transition_width: 2.0,
+        avoid_radius: 6.0,
         ..Params::default()
     };
     let robots = (0..10)
         .map(|k| {
             let col = (k / 5) as f64;
             let row = (k % 5) as f64;
-            let start = [-80.0 - 25.0 * col, -50.0 + 25.0 * row, 0.0];
-            let goal = [60.0, -67.5 + 15.0 * k as f64, FRAC_PI_2];
+            let start = [-60.0 - 20.0 * col, -40.0 + 20.0 * row, 0.0];
+            // Goals in the order of the starts' heights, so that neighbours stay neighbours.
+            let slot = 2.0 * row + col;
+            let goal = [40.0, -67.5 + 15.0 * slot, 0.0];
             robot(start, goal)
         })
         .collect();
     Scenario {
         name: "Example 4: obstacle and collision avoidance into a line".into(),
-        bounds: Some([-120.0, -85.0, 90.0, 85.0]),
+        bounds: Some([-95.0, -80.0, 60.0, 80.0]),
         duration: 25.0,
         dt: 0.01,
         params,

@@ -6,8 +6,82 @@
 //! along `Γ_ri⊥`, the tangent whose projection on its own body Y axis is positive: every robot
 //! turns left, so that the two robots of a pair circle their midpoint the same way.
 
+use crate::params::Avoidance;
 use crate::se2::heading;
 use glam::DVec2;
+
+/// The virtual obstacle a robot avoids, and the distance that drives its transition `ς`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cluster {
+    /// `p̃_o`: the centroid of the robot and the neighbours it avoids.
+    pub center: DVec2,
+    /// The distance fed to `ς` (eq. `eq_switch_func` with `R_c`): `|p_i − p̃_o|` for
+    /// [`Avoidance::Paper`]; half the distance to the nearest avoided neighbour for
+    /// [`Avoidance::Exit`], so that one close neighbour is never diluted by far ones (for a
+    /// pair the two are equal).
+    pub distance: f64,
+}
+
+/// What a robot knows of itself when it picks the neighbours to avoid.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Approach {
+    /// Its position `p_i`.
+    pub position: DVec2,
+    /// Its direction of motion under the goal field (heading times the sign of the speed).
+    pub motion: DVec2,
+    /// Its distance to its goal position.
+    pub to_goal: f64,
+}
+
+/// The cluster a robot avoids among its sensed `neighbours`, or `None`.
+///
+/// Only neighbours closer than `range` ([`pair_range`]) count. With [`Avoidance::Exit`] a
+/// neighbour at distance `d` also counts only if
+/// - the robot's motion leads towards it: the case `θ_r < π/2` of eq. `eq_ob_avoid_VF` applied
+///   to each neighbour. A robot moving away from a neighbour cannot collide with it by its own
+///   motion, and one that ignored the rule would circle the virtual obstacle forever
+///   (MATH-NOTES §5);
+/// - and the robot would not reach its goal first: `to_goal ≥ d − safe` with
+///   `safe = 2·r_ij`. A robot settling at its goal next to a parked neighbour does not start
+///   to circle it.
+#[must_use]
+pub fn cluster(
+    me: Approach,
+    neighbours: impl IntoIterator<Item = DVec2>,
+    range: f64,
+    safe: f64,
+    avoidance: Avoidance,
+) -> Option<Cluster> {
+    let Approach {
+        position: p_i,
+        motion,
+        to_goal,
+    } = me;
+    let mut sum = p_i;
+    let mut n = 1usize;
+    let mut nearest = f64::INFINITY;
+    for q in neighbours {
+        let d = q.distance(p_i);
+        if d > range {
+            continue;
+        }
+        if avoidance == Avoidance::Exit && (motion.dot(q - p_i) <= 0.0 || to_goal < d - safe) {
+            continue;
+        }
+        sum += q;
+        n += 1;
+        nearest = nearest.min(d);
+    }
+    if n == 1 {
+        return None;
+    }
+    let center = sum / n as f64;
+    let distance = match avoidance {
+        Avoidance::Paper => p_i.distance(center),
+        Avoidance::Exit => 0.5 * nearest,
+    };
+    Some(Cluster { center, distance })
+}
 
 /// The virtual obstacle `p̃_o` of robot `i` at `p_i`: the centroid of `p_i` and of the
 /// neighbours' positions `others` (eq. `eq_tilde_p_o` for two robots, its convex-combination
@@ -59,6 +133,36 @@ mod tests {
     use super::*;
     use crate::approx::assert_close;
     use std::f64::consts::{FRAC_PI_2, PI};
+
+    #[test]
+    fn exit_ignores_neighbours_behind_and_never_dilutes_a_close_one() {
+        let p = DVec2::ZERO;
+        let ahead = DVec2::new(2.0, 0.0);
+        let behind = [DVec2::new(-7.0, 0.5), DVec2::new(-7.0, -0.5)];
+        let all = [ahead, behind[0], behind[1]];
+        let me = Approach {
+            position: p,
+            motion: DVec2::X,
+            to_goal: 20.0,
+        };
+        // Paper: the centroid of all four is behind the robot and 3 away.
+        let c = cluster(me, all, 8.0, 1.0, Avoidance::Paper).unwrap();
+        assert_eq!(c.center, DVec2::new(-3.0, 0.0));
+        assert_eq!(c.distance, 3.0);
+        // Exit: only the neighbour ahead counts, at half its distance.
+        let c = cluster(me, all, 8.0, 1.0, Avoidance::Exit).unwrap();
+        assert_eq!(c.center, DVec2::new(1.0, 0.0));
+        assert_eq!(c.distance, 1.0);
+        // Moving away from everyone: nothing to avoid.
+        assert_eq!(cluster(me, behind, 8.0, 1.0, Avoidance::Exit), None);
+        // Out of range.
+        let far = [DVec2::new(9.0, 0.0)];
+        assert_eq!(cluster(me, far, 8.0, 1.0, Avoidance::Paper), None);
+        // Settling at a goal 0.5 away, the neighbour 2 ahead (beyond 2·r_ij = 1) is left alone.
+        let settling = Approach { to_goal: 0.5, ..me };
+        assert_eq!(cluster(settling, [ahead], 8.0, 1.0, Avoidance::Exit), None);
+        assert!(cluster(settling, [ahead], 8.0, 1.0, Avoidance::Paper).is_some());
+    }
 
     #[test]
     fn virtual_obstacle_is_the_midpoint_and_the_centroid() {

@@ -56,8 +56,12 @@ mod cli {
             #[arg(long, default_value_t = 21)]
             grid: usize,
         },
-        /// List the presets.
-        Presets,
+        /// List the presets, or print one as a scenario file with `--preset NAME`.
+        Presets {
+            /// Print this preset's scenario JSON (a starting point for a file of your own).
+            #[arg(long, value_name = "NAME")]
+            preset: Option<String>,
+        },
     }
 
     #[derive(Args)]
@@ -125,7 +129,11 @@ mod cli {
     fn run(cmd: Command) -> Result<(), String> {
         let mut out = std::io::stdout().lock();
         match cmd {
-            Command::Presets => {
+            Command::Presets { preset: Some(name) } => {
+                let s = preset(&name).map_err(|e| e.to_string())?;
+                writeln!(out, "{}", s.to_json()).map_err(|e| e.to_string())?;
+            }
+            Command::Presets { preset: None } => {
                 for p in PRESETS {
                     writeln!(out, "{:<30} {}", p.name, p.summary).map_err(|e| e.to_string())?;
                 }
