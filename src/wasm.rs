@@ -1,1 +1,282 @@
+//! The JavaScript facade (wasm32 only): presets, scenarios and whole recorded runs for the
+//! page in `www/`. The core knows nothing of JavaScript; this module only converts.
+//!
+//! Scenarios and reports cross as plain JS objects (serde-wasm-bindgen, JSON-compatible: a
+//! missing value is `null`, maps are objects); per-sample data leaves as flat
+//! `Float64Array`s whose layouts are documented on [`Run`]. Every function that takes input
+//! returns `Result<_, JsError>` whose message is the core's [`Error`] text, which names the
+//! offending field (`params.k_v: must be positive, not -1`).
 
+use crate::error::Error;
+use crate::presets::{self, PRESETS};
+use crate::scenario::Scenario;
+use crate::sim::{self, Report, Sample};
+use js_sys::Float64Array;
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+/// At most this many samples are kept per robot (the first and the last always).
+pub const MAX_SAMPLES_PER_ROBOT: usize = 2_000;
+/// At most this many samples are kept over all robots, so that a scenario with very many
+/// robots thins its trajectories instead of exhausting the module's memory.
+pub const MAX_SAMPLES_TOTAL: usize = 1_000_000;
+/// Values per trajectory sample: `[t, x, y, θ, v, ω]`.
+pub const SAMPLE_STRIDE: usize = 6;
+
+/// One entry of [`presets`].
+#[derive(Serialize)]
+struct PresetInfo {
+    name: &'static str,
+    summary: &'static str,
+}
+
+/// Every preset as `[{name, summary}]`, the default first.
+///
+/// # Errors
+/// Only if the JS engine refuses to build the array.
+#[wasm_bindgen]
+pub fn presets() -> Result<JsValue, JsError> {
+    let list: Vec<PresetInfo> = PRESETS
+        .iter()
+        .map(|p| PresetInfo {
+            name: p.name,
+            summary: p.summary,
+        })
+        .collect();
+    to_js(&list)
+}
+
+/// The name of the preset shown when nothing else is asked for.
+#[wasm_bindgen(js_name = defaultPreset)]
+#[must_use]
+pub fn default_preset() -> String {
+    presets::DEFAULT_PRESET.to_owned()
+}
+
+/// The preset `name` as a scenario object (the JSON scenario format, bounds resolved).
+///
+/// # Errors
+/// An unknown name; the message lists the names that exist.
+#[wasm_bindgen(js_name = presetScenario)]
+pub fn preset_scenario(name: &str) -> Result<JsValue, JsError> {
+    let mut s = presets::preset(name).map_err(js_error)?;
+    s.bounds = Some(s.resolved_bounds());
+    to_js(&s)
+}
+
+/// Checks a scenario (object or JSON text) without running it and returns it with the
+/// defaults filled in and the bounds resolved.
+///
+/// # Errors
+/// The first offending field, as for [`Run::new`].
+#[wasm_bindgen(js_name = checkScenario)]
+pub fn check_scenario(scenario: JsValue) -> Result<JsValue, JsError> {
+    let mut s = scenario_from_js(scenario).map_err(js_error)?;
+    s.bounds = Some(s.resolved_bounds());
+    to_js(&s)
+}
+
+/// A scenario simulated to its end, with every robot's trajectory recorded.
+///
+/// Flat array layouts (all `Float64Array`, robots in scenario order, lengths in brackets):
+/// - [`trajectories`](Run::trajectories) `[robots · samples · 6]`: robot-major, then sample,
+///   then `t, x, y, θ, v, ω` (s, m, m, rad in `(−π, π]`, m/s, rad/s). Sample `k` of robot
+///   `i` starts at `(i · samples + k) · 6`. Every robot has the same sample times: `t = 0`
+///   first, the end of the run last, evenly spaced in between.
+/// - [`starts`](Run::starts) and [`goals`](Run::goals) `[robots · 3]`: `x, y, θ`.
+/// - [`obstacles`](Run::obstacles) `[obstacles · 4]`: `cx, cy, r_o, R_o` (centre, disc radius,
+///   influence radius).
+/// - [`bounds`](Run::bounds) `[4]`: `xmin, ymin, xmax, ymax`.
+#[wasm_bindgen]
+pub struct Run {
+    scenario: Scenario,
+    report: Report,
+    samples: usize,
+    trajectories: Vec<f64>,
+}
+
+/// Methods exported to JavaScript.
+#[wasm_bindgen]
+impl Run {
+    /// Validates `scenario` (a scenario object such as [`preset_scenario`] returns, or JSON
+    /// text) and simulates it to its end.
+    ///
+    /// # Errors
+    /// A scenario that does not parse or validate; the message names the field.
+    #[wasm_bindgen(constructor)]
+    pub fn new(scenario: JsValue) -> Result<Run, JsError> {
+        let s = scenario_from_js(scenario).map_err(js_error)?;
+        Ok(Self::simulate(s))
+    }
+
+    /// Runs the preset `name`.
+    ///
+    /// # Errors
+    /// An unknown name; the message lists the names that exist.
+    #[wasm_bindgen(js_name = fromPreset)]
+    pub fn from_preset(name: &str) -> Result<Run, JsError> {
+        let s = presets::preset(name).map_err(js_error)?;
+        Ok(Self::simulate(s))
+    }
+
+    /// The scenario's name (free text: show it with `textContent`).
+    #[wasm_bindgen(getter)]
+    #[must_use]
+    pub fn name(&self) -> String {
+        self.scenario.name.clone()
+    }
+
+    /// Number of robots.
+    #[wasm_bindgen(getter, js_name = robotCount)]
+    #[must_use]
+    pub fn robot_count(&self) -> usize {
+        self.scenario.robots.len()
+    }
+
+    /// Number of recorded samples per robot (at least 2).
+    #[wasm_bindgen(getter, js_name = sampleCount)]
+    #[must_use]
+    pub fn sample_count(&self) -> usize {
+        self.samples
+    }
+
+    /// Simulated time at the end (s).
+    #[wasm_bindgen(getter)]
+    #[must_use]
+    pub fn duration(&self) -> f64 {
+        self.report.time
+    }
+
+    /// Whether the robots are independent runs drawn together (no pair metrics).
+    #[wasm_bindgen(getter)]
+    #[must_use]
+    pub fn independent(&self) -> bool {
+        self.scenario.independent
+    }
+
+    /// The safe radius `r_ij` (m): two robots closer than twice this are a violation.
+    #[wasm_bindgen(getter, js_name = safeRadius)]
+    #[must_use]
+    pub fn safe_radius(&self) -> f64 {
+        self.scenario.params.safe_radius
+    }
+
+    /// `[robots · samples · 6]`: see [`Run`].
+    #[must_use]
+    pub fn trajectories(&self) -> Float64Array {
+        Float64Array::from(self.trajectories.as_slice())
+    }
+
+    /// `[robots · 3]` start poses `x, y, θ`.
+    #[must_use]
+    pub fn starts(&self) -> Float64Array {
+        let v: Vec<f64> = self.scenario.robots.iter().flat_map(|r| r.start).collect();
+        Float64Array::from(v.as_slice())
+    }
+
+    /// `[robots · 3]` goal poses `x, y, θ`.
+    #[must_use]
+    pub fn goals(&self) -> Float64Array {
+        let v: Vec<f64> = self.scenario.robots.iter().flat_map(|r| r.goal).collect();
+        Float64Array::from(v.as_slice())
+    }
+
+    /// `[obstacles · 4]`: `cx, cy, r_o, R_o`.
+    #[must_use]
+    pub fn obstacles(&self) -> Float64Array {
+        let v: Vec<f64> = self
+            .scenario
+            .obstacles
+            .iter()
+            .flat_map(|o| [o.center.x, o.center.y, o.radius, o.influence])
+            .collect();
+        Float64Array::from(v.as_slice())
+    }
+
+    /// `[4]`: `xmin, ymin, xmax, ymax` of the area to draw.
+    #[must_use]
+    pub fn bounds(&self) -> Float64Array {
+        Float64Array::from(self.scenario.resolved_bounds().as_slice())
+    }
+
+    /// The run's report as an object (the JSON of `dvf simulate`).
+    ///
+    /// # Errors
+    /// Only if the JS engine refuses to build the object.
+    pub fn report(&self) -> Result<JsValue, JsError> {
+        to_js(&self.report)
+    }
+
+    /// The scenario that was run, defaults filled in and bounds resolved.
+    ///
+    /// # Errors
+    /// Only if the JS engine refuses to build the object.
+    pub fn scenario(&self) -> Result<JsValue, JsError> {
+        let mut s = self.scenario.clone();
+        s.bounds = Some(s.resolved_bounds());
+        to_js(&s)
+    }
+}
+
+/// Rust-only helpers.
+impl Run {
+    /// Simulates a validated scenario, keeping at most [`MAX_SAMPLES_PER_ROBOT`] samples per
+    /// robot.
+    fn simulate(scenario: Scenario) -> Run {
+        let every = decimation(scenario.steps(), scenario.robots.len());
+        let (report, traj) = sim::run_recorded(&scenario, every);
+        let samples = traj.first().map_or(0, Vec::len);
+        // Every robot is recorded at the same steps, so the rows are equally long.
+        debug_assert!(traj.iter().all(|t| t.len() == samples));
+        let trajectories = traj.iter().flatten().flat_map(|s: &Sample| *s).collect();
+        Run {
+            scenario,
+            report,
+            samples,
+            trajectories,
+        }
+    }
+}
+
+/// The recording interval (in steps) that keeps a run of `steps` steps within the sample
+/// budget. `run_recorded` keeps steps `0, every, 2·every, …` and the last, that is at most
+/// `steps / every + 2` samples.
+fn decimation(steps: usize, robots: usize) -> usize {
+    let per_robot = (MAX_SAMPLES_TOTAL / robots.max(1)).clamp(3, MAX_SAMPLES_PER_ROBOT);
+    steps.div_ceil(per_robot - 2).max(1)
+}
+
+/// A scenario from a JS object or from JSON text, parsed and validated.
+fn scenario_from_js(value: JsValue) -> Result<Scenario, Error> {
+    if let Some(text) = value.as_string() {
+        return Scenario::from_json(&text);
+    }
+    if !value.is_object() || js_sys::Array::is_array(&value) {
+        return Err(Error::Parse {
+            field: String::new(),
+            message: "expected an object with a \"robots\" list (or its JSON text)".into(),
+        });
+    }
+    // serde_path_to_error gives the same field paths as `Scenario::from_json`.
+    let de = serde_wasm_bindgen::Deserializer::from(value);
+    let s: Scenario = serde_path_to_error::deserialize(de).map_err(|e| {
+        let path = e.path().to_string();
+        Error::Parse {
+            field: if path == "." { String::new() } else { path },
+            message: e.into_inner().to_string(),
+        }
+    })?;
+    s.validate()?;
+    Ok(s)
+}
+
+/// The one conversion from the core's errors to JS `Error`s.
+fn js_error(e: Error) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+/// Serialises to a plain JS value: `None` as `null`, maps as objects.
+fn to_js<T: Serialize + ?Sized>(v: &T) -> Result<JsValue, JsError> {
+    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(|e| JsError::new(&e.to_string()))
+}
