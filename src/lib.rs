@@ -23,3 +23,6 @@ pub use params::Params;
 pub use scenario::Scenario;
 pub use se2::Pose;
 pub use sim::{run, Report, Simulation};
+
+#[cfg(all(test, target_arch = "wasm32"))]
+wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);

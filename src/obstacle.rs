@@ -124,7 +124,10 @@ pub fn blend<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     use crate::approx::assert_close;
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
 
     #[test]
     fn transition_limits_and_continuity() {

@@ -219,6 +219,9 @@ fn example4() -> Scenario {
 #[cfg(test)]
 mod tests {
     use super::*;
+    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
 
     #[test]
     fn every_preset_is_valid_and_named_uniquely() {

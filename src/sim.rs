@@ -360,7 +360,10 @@ pub fn run_recorded(s: &Scenario, every: usize) -> (Report, Vec<Vec<Sample>>) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     use crate::approx::assert_close;
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
 
     /// Closed-form integration against a fine Euler integration of the same held command.
     #[test]

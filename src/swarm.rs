@@ -131,8 +131,11 @@ pub fn tangent_field(p_i: DVec2, theta: f64, p_o: DVec2) -> DVec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     use crate::approx::assert_close;
     use std::f64::consts::{FRAC_PI_2, PI};
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
 
     #[test]
     fn exit_ignores_neighbours_behind_and_never_dilutes_a_close_one() {
