@@ -26,6 +26,7 @@ test-native:
 test-browser: tools
 	wasm-pack test --headless --chrome
 
+# The page as users load it: the release package, served, driven in Chromium (screenshots in test-results/).
 test-e2e: build-wasm
 	node tests/e2e/smoke.mjs
 

@@ -1,8 +1,8 @@
 //! The JavaScript facade (wasm32 only): presets, scenarios and whole recorded runs for the
 //! page in `www/`. The core knows nothing of JavaScript; this module only converts.
 //!
-//! Scenarios and reports cross as plain JS objects (serde-wasm-bindgen, JSON-compatible: a
-//! missing value is `null`, maps are objects); per-sample data leaves as flat
+//! Scenarios and reports leave as plain JS objects (serde-wasm-bindgen, JSON-compatible: a
+//! missing value is `null`, maps are objects) and come in as objects or JSON text; per-sample data leaves as flat
 //! `Float64Array`s whose layouts are documented on [`Run`]. Every function that takes input
 //! returns `Result<_, JsError>` whose message is the core's [`Error`] text, which names the
 //! offending field (`params.k_v: must be positive, not -1`).
@@ -247,6 +247,12 @@ fn decimation(steps: usize, robots: usize) -> usize {
 }
 
 /// A scenario from a JS object or from JSON text, parsed and validated.
+///
+/// An object goes through `JSON.stringify` and [`Scenario::from_json`] rather than straight
+/// through serde-wasm-bindgen, whose struct deserialiser looks up the known keys only and so
+/// would silently ignore a misspelt one (`{"params": {"kv": 1}}`). Objects and text thus get
+/// the same checks and the same messages. JSON has no NaN or infinity: such a number arrives
+/// as `null` and is reported as a type error at its field.
 fn scenario_from_js(value: JsValue) -> Result<Scenario, Error> {
     if let Some(text) = value.as_string() {
         return Scenario::from_json(&text);
@@ -257,17 +263,15 @@ fn scenario_from_js(value: JsValue) -> Result<Scenario, Error> {
             message: "expected an object with a \"robots\" list (or its JSON text)".into(),
         });
     }
-    // serde_path_to_error gives the same field paths as `Scenario::from_json`.
-    let de = serde_wasm_bindgen::Deserializer::from(value);
-    let s: Scenario = serde_path_to_error::deserialize(de).map_err(|e| {
-        let path = e.path().to_string();
-        Error::Parse {
-            field: if path == "." { String::new() } else { path },
-            message: e.into_inner().to_string(),
-        }
-    })?;
-    s.validate()?;
-    Ok(s)
+    let text = js_sys::JSON::stringify(&value)
+        .ok()
+        .and_then(|t| t.as_string())
+        .ok_or_else(|| Error::Parse {
+            field: String::new(),
+            message: "the object cannot be written as JSON (a cycle, a BigInt or a function?)"
+                .into(),
+        })?;
+    Scenario::from_json(&text)
 }
 
 /// The one conversion from the core's errors to JS `Error`s.

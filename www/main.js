@@ -66,7 +66,10 @@ function selectPreset(name) {
     requestDraw();
   } catch (e) {
     showError(`Could not show preset "${name}": ${e.message ?? e}`);
-    if (state.model) setSelectedPreset(state.model.presetName);
+    if (state.model) {
+      setSelectedPreset(state.model.presetName);
+      history.replaceState(null, '', `#${encodeURIComponent(state.model.presetName)}`);
+    }
   }
 }
 
