@@ -1,11 +1,11 @@
 //! The JavaScript facade (wasm32 only): presets, scenarios and whole recorded runs for the
 //! page in `www/`. The core knows nothing of JavaScript; this module only converts.
 //!
-//! Scenarios and reports leave as plain JS objects (serde-wasm-bindgen, JSON-compatible: a
-//! missing value is `null`, maps are objects) and come in as objects or JSON text; per-sample data leaves as flat
-//! `Float64Array`s whose layouts are documented on [`Run`]. Every function that takes input
-//! returns `Result<_, JsError>` whose message is the core's [`Error`] text, which names the
-//! offending field (`params.k_v: must be positive, not -1`).
+//! Scenarios come in as objects or JSON text; scenarios and reports leave as plain JS objects
+//! (serde-wasm-bindgen, JSON-compatible: a missing value is `null`, maps are objects).
+//! Per-sample data leaves as flat `Float64Array`s whose layouts are documented on [`Run`].
+//! Every function that takes input returns `Result<_, JsError>` whose message is the core's
+//! [`Error`] text, which names the offending field (`params.k_v: must be positive, not -1`).
 
 use crate::error::Error;
 use crate::presets::{self, PRESETS};
