@@ -31,6 +31,9 @@ pub const MAX_DT: f64 = 0.1;
 pub const MAX_GAIN_STEP: f64 = 1.0;
 /// Coordinates, radii and gains must be at most this in magnitude.
 pub const MAX_MAGNITUDE: f64 = 1e6;
+/// `bounds` may reach this far: the default box around coordinates and rings of
+/// [`MAX_MAGNITUDE`] plus its margin stays inside it, so a written scenario reads back.
+pub const MAX_BOUNDS: f64 = 1e7;
 
 /// One robot: where it starts and the pose it must reach.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -163,17 +166,19 @@ impl Scenario {
         [lo.x, lo.y, hi.x, hi.y]
     }
 
-    /// Number of steps the run takes: `ceil(duration / dt)` (rounded to absorb
-    /// representation error, so 40 s at 0.01 s is exactly 4000 steps).
+    /// Number of steps the run takes: `ceil(duration / dt)`, at least 1 (a quotient within
+    /// 1e-9 of a whole number is taken as that number, so 40 s at 0.01 s is exactly 4000
+    /// steps despite representation error).
     #[must_use]
     pub fn steps(&self) -> usize {
         let n = self.duration / self.dt;
         let r = n.round();
-        if (n - r).abs() < 1e-9 * r.max(1.0) {
+        let steps = if (n - r).abs() < 1e-9 * r.max(1.0) {
             r as usize
         } else {
             n.ceil() as usize
-        }
+        };
+        steps.max(1)
     }
 
     /// Checks every value against its documented range.
@@ -200,7 +205,14 @@ impl Scenario {
         }
         if let Some(b) = self.bounds {
             for (k, v) in b.iter().enumerate() {
-                finite(&format!("bounds[{k}]"), *v)?;
+                if !v.is_finite() || v.abs() > MAX_BOUNDS {
+                    return invalid(
+                        &format!("bounds[{k}]"),
+                        format!(
+                            "must be a finite number of magnitude at most {MAX_BOUNDS:e}, not {v}"
+                        ),
+                    );
+                }
             }
             if !(b[0] < b[2] && b[1] < b[3]) {
                 return invalid(

@@ -745,7 +745,6 @@ fn bad_command_lines_are_rejected() {
 /// today it is clap's first line, "the following required arguments were not provided:",
 /// and the names are on the next line, which is cut.
 #[test]
-#[ignore = "dvf prints only clap's first line, which does not name the missing argument"]
 fn simulate_without_a_source_names_what_is_missing() {
     assert_rejected(&["simulate"], &["FILE"]);
 }

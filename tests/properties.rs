@@ -631,7 +631,6 @@ fn the_valid_scenario_is_valid() {
 /// obstacle ring: for coordinates near the accepted limit (1e6) they exceed it, and the file
 /// written back is rejected ("bounds[2]: must be at most 1e6 in magnitude").
 #[test]
-#[ignore = "Scenario::to_json can write bounds beyond MAX_MAGNITUDE that from_json rejects"]
 fn to_json_round_trips_at_the_magnitude_limit() {
     let s = Scenario::from_json(r#"{"robots": [{"start": [0, 0, 0], "goal": [1e6, 0, 0]}]}"#)
         .expect("coordinates of 1e6 are accepted");
@@ -643,7 +642,6 @@ fn to_json_round_trips_at_the_magnitude_limit() {
 /// 1e-9 of an integer, so a positive duration below ~1e-9·dt runs zero steps (and the report
 /// says `time: 0`).
 #[test]
-#[ignore = "Scenario::steps rounds a tiny positive duration down to zero steps"]
 fn a_positive_duration_runs_at_least_one_step() {
     let s = Scenario::from_json(
         r#"{"duration": 1e-11, "robots": [{"start": [0, 0, 0], "goal": [1, 0, 0]}]}"#,

@@ -110,10 +110,19 @@ mod cli {
                         0
                     };
                 }
-                // One line: clap's first line ("error: …"), without the usage block.
+                // One line: clap's message ("error: …" and, for missing arguments, their
+                // names on the following lines), without the usage block.
                 let text = e.render().to_string();
-                let line = text.lines().next().unwrap_or("error: invalid arguments");
-                eprintln!("{}", line.trim_start_matches("error: ").trim());
+                let message: Vec<&str> = text
+                    .lines()
+                    .map(str::trim)
+                    .take_while(|l| {
+                        !l.starts_with("Usage:") && !l.starts_with("For more information")
+                    })
+                    .filter(|l| !l.is_empty())
+                    .collect();
+                let line = message.join(" ");
+                eprintln!("{}", line.trim_start_matches("error: "));
                 return 2;
             }
         };
