@@ -57,25 +57,17 @@ pub fn cluster(
         motion,
         to_goal,
     } = me;
-    let mut sum = p_i;
-    let mut n = 1usize;
     let mut nearest = f64::INFINITY;
-    for q in neighbours {
-        let d = q.distance(p_i);
-        if d > range {
-            continue;
-        }
-        if avoidance == Avoidance::Exit && (motion.dot(q - p_i) <= 0.0 || to_goal < d - safe) {
-            continue;
-        }
-        sum += q;
-        n += 1;
-        nearest = nearest.min(d);
-    }
-    if n == 1 {
-        return None;
-    }
-    let center = sum / n as f64;
+    let avoided = neighbours
+        .into_iter()
+        .filter(|&q| {
+            let d = q.distance(p_i);
+            d <= range
+                && (avoidance == Avoidance::Paper
+                    || (motion.dot(q - p_i) > 0.0 && to_goal >= d - safe))
+        })
+        .inspect(|q| nearest = nearest.min(q.distance(p_i)));
+    let center = virtual_obstacle(p_i, avoided)?;
     let distance = match avoidance {
         Avoidance::Paper => p_i.distance(center),
         Avoidance::Exit => 0.5 * nearest,
