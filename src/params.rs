@@ -57,7 +57,7 @@ pub struct Params {
     pub tol_heading: f64,
     /// `g`: field magnitude below which the alignment term fades out, as
     /// `k_a·|Γ|²/(|Γ|² + g²)·atan(Γᴮʸ/Γᴮˣ)` (MATH-NOTES §3: at the goal the direction of a
-    /// vanishing field is round-off). Length/s. Not in the paper.
+    /// vanishing field is round-off). Length/s, far below `tol_position`. Not in the paper.
     pub align_fade: f64,
     /// `"exit"` (default) or `"paper"`: see [`Avoidance`].
     pub avoidance: Avoidance,
@@ -78,7 +78,7 @@ impl Default for Params {
             omega_max: None,
             tol_position: 0.05,
             tol_heading: 0.02,
-            align_fade: 1e-3,
+            align_fade: 1e-6,
             avoidance: Avoidance::Exit,
         }
     }

@@ -13,7 +13,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngAlgorithm, TestRng, TestRunner};
 use std::f64::consts::PI;
 
-/// Convergence as the brief defines it: position error ≤ 0.05 and heading error ≤ 0.02 rad
+/// Convergence as the acceptance criteria define it: position error ≤ 0.05 and heading error ≤ 0.02 rad
 /// (the crate's default `tol_position` / `tol_heading`, restated here so that a change of the
 /// defaults does not silently loosen this test).
 const TOL_POSITION: f64 = 0.05;
@@ -140,14 +140,14 @@ fn check_convergence(label: &str, seed: u64, pairs: usize, params: Params) {
             f.0, f.1, f.2, f.3
         );
     }
-    // The acceptance rate of the brief. With the seed fixed this is a deterministic check of
+    // The acceptance rate of the issue. With the seed fixed this is a deterministic check of
     // these pairs, not a statistical one.
     assert!(
         rate >= 0.995,
-        "{label}: only {}/{} converged; failures: {:?}",
+        "{label}: only {}/{} converged; first failures (start, goal, errors): {:?}",
         s.converged,
         s.pairs,
-        s.failures
+        &s.failures[..s.failures.len().min(3)]
     );
 }
 
@@ -169,6 +169,19 @@ fn random_pose_pairs_converge_with_unit_position_gains() {
         ..Params::default()
     };
     check_convergence("k_v = 1, k_omega = 1, k_a = 10", 0x5EED_0002, PAIRS, params);
+}
+
+/// The default fade `g = 1e-6` also finishes the heading for an alignment gain only 2.5 times
+/// the attitude gain, where the residual equilibrium `k_ω θ̃ = k_a·fade·atan(…)` of a larger
+/// `g` leaves pairs above the heading tolerance (README, notes on the paper: `g = 1e-3` left
+/// 52 of 500 such pairs unconverged).
+#[test]
+fn random_pose_pairs_converge_with_a_low_alignment_gain() {
+    let params = Params {
+        k_a: 2.5,
+        ..Params::default()
+    };
+    check_convergence("k_a = 2.5 k_omega", 0x5EED_0003, 1000, params);
 }
 
 // ---------------------------------------------------------------------------------------------
