@@ -362,6 +362,7 @@ mod tests {
     use super::*;
     // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     use crate::approx::assert_close;
+    use std::f64::consts::PI;
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
@@ -394,6 +395,58 @@ mod tests {
             assert_close!(exact.p.distance(h.p), 0.0, 1e-9);
             assert_close!(wrap_angle(exact.theta - h.theta), 0.0, 1e-10);
         }
+    }
+
+    /// Continuity through θ̃ = ±π along a trajectory (MATH-NOTES §2): in this run (one of the
+    /// 12 % of random pairs whose heading error passes ±π) the alignment term pushes θ̃ past π.
+    /// Where the principal branch jumps from +π to −π its body-frame field −φ̃ flips, by more
+    /// than half its length; on the continued branch the simulator uses it changes by no more
+    /// than an ordinary step does. Bound: θ̃ moves by at most (k_ω·π + k_a·π/2)·dt ≈ 0.17 rad
+    /// per step, near ±π ‖∂Ξ/∂θ‖ ≈ 0.93 and |p̃| ≈ 0.64·|φ̃|, so a step changes φ̃ by at most
+    /// about 10 % of its length (the largest step of this run is 3.2 %).
+    #[test]
+    fn field_is_continuous_where_the_heading_error_crosses_pi() {
+        use crate::field::goal_field_body;
+        let s = Scenario::from_json(
+            r#"{"duration": 20, "independent": true, "robots": [{
+                "start": [24.21918875932564, 31.044578697427795, 1.8223317158733334],
+                "goal": [43.44229027763088, 63.88736156275513, -1.3015366511357653]}]}"#,
+        )
+        .unwrap();
+        let mut sim = Simulation::new(&s);
+        let field = |sim: &Simulation| {
+            let r = sim.robots()[0];
+            let err = Pose {
+                p: r.pose.error_to(r.goal).p,
+                theta: r.heading_error,
+            };
+            let principal = r.pose.error_to(r.goal);
+            (
+                goal_field_body(err),
+                goal_field_body(principal),
+                principal.theta,
+            )
+        };
+        let mut prev = field(&sim);
+        let mut crossings = 0;
+        for _ in 0..s.steps() {
+            sim.step();
+            let now = field(&sim);
+            let principal_jumped = (now.2 - prev.2).abs() > PI;
+            if principal_jumped {
+                crossings += 1;
+                assert!(sim.robots()[0].heading_error.abs() > PI - 0.1);
+                assert!(now.1.distance(prev.1) > 0.5 * prev.1.length());
+                assert!(
+                    now.0.distance(prev.0) < 0.1 * prev.0.length(),
+                    "continued field jumped from {:?} to {:?}",
+                    prev.0,
+                    now.0
+                );
+            }
+            prev = now;
+        }
+        assert!(crossings >= 1, "the run never crossed ±π");
     }
 
     #[test]
