@@ -149,12 +149,15 @@ mod cli {
             }
             Command::Simulate { source, csv } => {
                 let s = source.load()?;
-                let every = if csv.is_some() { 1 } else { usize::MAX };
-                let (report, traj) = run_recorded(&s, every);
-                if let Some(path) = csv {
-                    write_csv(&path, &traj)
-                        .map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
-                }
+                let report = match csv {
+                    Some(path) => {
+                        let (report, traj) = run_recorded(&s, 1);
+                        write_csv(&path, &traj)
+                            .map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+                        report
+                    }
+                    None => dvf::run(&s),
+                };
                 let json = serde_json::to_string(&report).map_err(|e| e.to_string())?;
                 writeln!(out, "{json}").map_err(|e| e.to_string())?;
             }
