@@ -153,25 +153,28 @@ pub fn evaluate<'a>(
         2.0 * params.safe_radius,
         params.avoidance,
     );
-    let keep_c = vo.map_or(1.0, |c| {
-        crate::obstacle::transition(c.distance, params.avoid_radius, eps)
-    });
+    // The virtual obstacle and its ς_c, while it has any influence (ς_c < 1).
+    let avoiding = vo
+        .map(|c| {
+            let s = crate::obstacle::transition(c.distance, params.avoid_radius, eps);
+            (c.center, s)
+        })
+        .filter(|&(_, s)| s < 1.0);
 
     let gp_body = unrotate(theta, gp);
-    let (field, v, delta) = if keep_c < 1.0 {
-        let o = vo.map_or(pose.p, |c| c.center);
-        let t = tangent_field(pose.p, theta, o);
-        let field = keep_c * gp + (1.0 - keep_c) * t;
-        let fb = unrotate(theta, field);
-        let v = params.k_v * keep_c * gp_body.x + (1.0 - keep_c) * params.avoid_speed;
-        (field, v, fb.y.atan2(fb.x))
-    } else {
-        let fade = alignment_fade(gp_body.length(), params.align_fade);
-        (
-            gp,
-            params.k_v * gp_body.x,
-            fade * atan_ratio(gp_body.y, gp_body.x),
-        )
+    let (field, v, delta, keep_c) = match avoiding {
+        Some((o, keep_c)) => {
+            let t = tangent_field(pose.p, theta, o);
+            let field = keep_c * gp + (1.0 - keep_c) * t;
+            let fb = unrotate(theta, field);
+            let v = params.k_v * keep_c * gp_body.x + (1.0 - keep_c) * params.avoid_speed;
+            (field, v, fb.y.atan2(fb.x), keep_c)
+        }
+        None => {
+            let fade = alignment_fade(gp_body.length(), params.align_fade);
+            let delta = fade * atan_ratio(gp_body.y, gp_body.x);
+            (gp, params.k_v * gp_body.x, delta, 1.0)
+        }
     };
     let omega = -params.k_omega * keep_c * keep_o * err.theta + params.k_a * delta;
 
@@ -181,7 +184,7 @@ pub fn evaluate<'a>(
         goal_field: goal_world,
         obstacle_keep: keep_o,
         robot_keep: keep_c,
-        virtual_obstacle: vo.map(|c| c.center).filter(|_| keep_c < 1.0),
+        virtual_obstacle: avoiding.map(|(o, _)| o),
     }
 }
 
