@@ -257,14 +257,7 @@ impl Simulation {
             for (k, o) in self.obstacles.iter().enumerate() {
                 let c = o.clearance(r.pose.p);
                 self.min_clearance = Some(self.min_clearance.map_or(c, |m: f64| m.min(c)));
-                let key = (i, k);
-                if c < 0.0 {
-                    if self.obstacle_violating.insert(key) {
-                        self.violations += 1;
-                    }
-                } else {
-                    self.obstacle_violating.remove(&key);
-                }
+                self.violations += count_entry(&mut self.obstacle_violating, (i, k), c < 0.0);
             }
         }
         if self.independent {
@@ -275,13 +268,7 @@ impl Simulation {
             for j in i + 1..self.robots.len() {
                 let d = self.robots[i].pose.p.distance(self.robots[j].pose.p);
                 self.min_pair = Some(self.min_pair.map_or(d, |m: f64| m.min(d)));
-                if d < safe {
-                    if self.pair_violating.insert((i, j)) {
-                        self.violations += 1;
-                    }
-                } else {
-                    self.pair_violating.remove(&(i, j));
-                }
+                self.violations += count_entry(&mut self.pair_violating, (i, j), d < safe);
             }
         }
     }
@@ -308,6 +295,21 @@ impl Simulation {
             min_obstacle_clearance: self.min_clearance,
             violations: self.violations,
         }
+    }
+}
+
+/// Tracks which pairs are in violation: returns 1 when `key` enters the violating state (a
+/// violation event), 0 while it stays in it or out of it.
+fn count_entry(
+    violating: &mut std::collections::BTreeSet<(usize, usize)>,
+    key: (usize, usize),
+    now: bool,
+) -> usize {
+    if now {
+        usize::from(violating.insert(key))
+    } else {
+        violating.remove(&key);
+        0
     }
 }
 
