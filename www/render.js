@@ -181,9 +181,14 @@ export function drawInfluence(ctx, x, y, radius) {
   ctx.arc(x, y, radius, 0, 2 * Math.PI);
   ctx.fillStyle = INFLUENCE_FILL;
   ctx.fill();
-  ctx.setLineDash(INFLUENCE_DASH_PX);
-  ctx.lineWidth = 1.5;
-  ctx.strokeStyle = INFLUENCE_STROKE;
+  strokeDashed(ctx, INFLUENCE_DASH_PX, 1.5, INFLUENCE_STROKE);
+}
+
+/** Strokes the current path with a dash pattern, then restores solid lines. */
+function strokeDashed(ctx, dash, width, colour) {
+  ctx.setLineDash(dash);
+  ctx.lineWidth = width;
+  ctx.strokeStyle = colour;
   ctx.stroke();
   ctx.setLineDash([]);
 }
@@ -265,22 +270,14 @@ export function drawGoal(ctx, x, y, theta, colour) {
   trianglePath(ctx, x, y, theta, MARKER_SCALE);
   ctx.fillStyle = 'rgba(255, 255, 255, 0.7)';
   ctx.fill();
-  ctx.setLineDash(GOAL_DASH_PX);
-  ctx.lineWidth = 1.5;
-  ctx.strokeStyle = colour;
-  ctx.stroke();
-  ctx.setLineDash([]);
+  strokeDashed(ctx, GOAL_DASH_PX, 1.5, colour);
 }
 
 /** The safe radius r_ij around a robot (radius in CSS px). */
 export function drawSafeDisc(ctx, x, y, radius, colour) {
   ctx.beginPath();
   ctx.arc(x, y, radius, 0, 2 * Math.PI);
-  ctx.setLineDash(SAFE_DASH_PX);
-  ctx.lineWidth = 1;
-  ctx.strokeStyle = colour;
-  ctx.stroke();
-  ctx.setLineDash([]);
+  strokeDashed(ctx, SAFE_DASH_PX, 1, colour);
 }
 
 /** Draws a legend glyph on a small canvas (CSS size `size`×`size` px). */
