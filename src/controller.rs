@@ -24,9 +24,9 @@
 
 use crate::field::goal_field_body;
 use crate::obstacle::{blend, Obstacle};
-use crate::params::Params;
+use crate::params::{Avoidance, Params};
 use crate::se2::{heading, rotate, unrotate, Pose};
-use crate::swarm::{cluster, pair_range, tangent_field, Approach};
+use crate::swarm::{cluster, pair_range, tangent_field, Approach, Neighbour};
 use glam::DVec2;
 
 /// Velocity inputs of a unicycle (eq. `eq_kine_nonho`).
@@ -113,18 +113,26 @@ pub fn command(
     neighbours: &[DVec2],
 ) -> Command {
     let err = pose.error_to(goal);
-    evaluate(params, pose, err, obstacles, neighbours.iter().copied()).command
+    // Without speeds every robot counts as moving alike: the paper's midpoint.
+    let sensed = neighbours.iter().map(|&position| Neighbour {
+        position,
+        speed: 0.0,
+    });
+    evaluate(params, pose, err, 0.0, obstacles, sensed).command
 }
 
 /// The controller with the heading error `err.theta` on a branch of the caller's choice
-/// (see [`crate::se2::continue_branch`]); `err` is `pose.error_to(goal)` otherwise.
+/// (see [`crate::se2::continue_branch`]); `err` is `pose.error_to(goal)` otherwise. `speed`
+/// is the robot's own `|v|` (its last command) and each neighbour carries its own: they place
+/// the virtual obstacle ([`crate::swarm::cluster`]).
 #[must_use]
 pub fn evaluate<'a>(
     params: &Params,
     pose: Pose,
     err: Pose,
+    speed: f64,
     obstacles: impl IntoIterator<Item = &'a Obstacle>,
-    neighbours: impl IntoIterator<Item = DVec2>,
+    neighbours: impl IntoIterator<Item = Neighbour>,
 ) -> Evaluation {
     let theta = pose.theta;
     let eps = params.transition_width;
@@ -138,13 +146,16 @@ pub fn evaluate<'a>(
     } else {
         heading(theta)
     };
-    let (gp, keep_o) = blend(pose.p, motion, goal_world, obstacles, eps);
+    let to_goal = err.p.length();
+    let exits = (params.avoidance == Avoidance::Exit).then_some(to_goal);
+    let (gp, keep_o) = blend(pose.p, motion, goal_world, obstacles, eps, exits);
 
     let range = pair_range(params.avoid_radius, eps);
     let me = Approach {
         position: pose.p,
         motion,
-        to_goal: err.p.length(),
+        to_goal,
+        speed,
     };
     let vo = cluster(
         me,
@@ -308,7 +319,11 @@ mod tests {
         let p = Params::default();
         let pose = Pose::new(0.0, 0.0, 0.0);
         let goal = Pose::new(50.0, 0.0, 0.0);
-        let e = evaluate(&p, pose, pose.error_to(goal), [], [DVec2::new(1.0, 0.0)]);
+        let n = Neighbour {
+            position: DVec2::new(1.0, 0.0),
+            speed: 2.0,
+        };
+        let e = evaluate(&p, pose, pose.error_to(goal), 2.0, [], [n]);
         assert_eq!(e.robot_keep, 0.0);
         assert_eq!(e.command.v, p.avoid_speed);
         assert_eq!(e.virtual_obstacle, Some(DVec2::new(0.5, 0.0)));

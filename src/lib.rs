@@ -9,10 +9,12 @@ pub mod field;
 pub mod obstacle;
 pub mod params;
 pub mod presets;
+pub mod safety;
 pub mod scenario;
 pub mod se2;
 pub mod sim;
 pub mod swarm;
+pub mod sweep;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
 

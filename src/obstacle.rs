@@ -100,6 +100,12 @@ pub fn avoidance_field(gamma_r: DVec2, motion: DVec2, goal_field: DVec2) -> DVec
 /// The blend of eq. `eq_VF_all_V3` over the sensed obstacles:
 /// `Γ_P = (Π ς_i) Γ̃_d + Σ (1 − ς_i) Γ_oi`. Returns `(Γ_P, Π ς_i)`; the product also scales the
 /// attitude feedback of eq. `eq_nonholo_controller_ob_avoid`.
+///
+/// With `to_goal = Some(distance to the goal position)` an obstacle whose surface is farther
+/// than the goal is let go ([`goal_first`]): without that, a goal in the transition band
+/// `R_o < |p_d − p_o| < R_o + ε` would hold the robot in a spurious equilibrium next to it
+/// (the circular field does not vanish at the goal, the goal field does). `None` is the
+/// paper's blend.
 #[must_use]
 pub fn blend<'a>(
     p: DVec2,
@@ -107,18 +113,35 @@ pub fn blend<'a>(
     goal_field: DVec2,
     obstacles: impl IntoIterator<Item = &'a Obstacle>,
     eps: f64,
+    to_goal: Option<f64>,
 ) -> (DVec2, f64) {
     let mut keep = 1.0;
     let mut sum = DVec2::ZERO;
     for o in obstacles {
         let gamma_r = p - o.center;
-        let s = transition(gamma_r.length(), o.influence, eps);
+        let mut s = transition(gamma_r.length(), o.influence, eps);
+        if let Some(g) = to_goal {
+            s = 1.0 - (1.0 - s) * (1.0 - goal_first(o.clearance(p), g, eps));
+        }
         if s < 1.0 {
             keep *= s;
             sum += (1.0 - s) * avoidance_field(gamma_r, motion, goal_field);
         }
     }
     (keep * goal_field + sum, keep)
+}
+
+/// How far an obstacle is let go because the goal is nearer than its surface: 0 while
+/// `to_goal ≥ clearance`, 1 once `to_goal ≤ clearance − ε`, the transition `ς` in between.
+///
+/// Every point of the segment from the robot to its goal is then farther than
+/// `clearance − to_goal` from the disc (triangle inequality), so heading for the goal cannot
+/// need the circular field; the safety barrier ([`crate::safety`]) covers the curvature of the
+/// real path.
+#[inline]
+#[must_use]
+pub fn goal_first(clearance: f64, to_goal: f64, eps: f64) -> f64 {
+    transition(clearance - to_goal, 0.0, eps)
 }
 
 #[cfg(test)]
@@ -198,10 +221,17 @@ mod tests {
             influence: 2.0,
         };
         let g = DVec2::new(-3.0, 1.0);
-        let (f, keep) = blend(DVec2::new(10.0, 0.0), -DVec2::X, g, [&o], 0.5);
+        let (f, keep) = blend(DVec2::new(10.0, 0.0), -DVec2::X, g, [&o], 0.5, None);
         assert_eq!((f, keep), (g, 1.0));
         // Inside the ring, approaching: purely tangential, attitude feedback off.
-        let (f, keep) = blend(DVec2::new(1.5, 0.0), DVec2::new(-1.0, 0.2), g, [&o], 0.5);
+        let (f, keep) = blend(
+            DVec2::new(1.5, 0.0),
+            DVec2::new(-1.0, 0.2),
+            g,
+            [&o],
+            0.5,
+            None,
+        );
         assert_eq!(keep, 0.0);
         assert_close!(f.x, 0.0, 1e-15);
     }

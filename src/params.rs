@@ -8,6 +8,11 @@
 
 use serde::{Deserialize, Serialize};
 
+/// The default barrier rate `α` (1/s): over a gap of 1 m a robot approaches at most 5 m/s
+/// towards an obstacle and 2.5 m/s towards a neighbour (which does the same); the field is
+/// rarely braked outside the last metre.
+pub const DEFAULT_BARRIER_RATE: f64 = 5.0;
+
 /// How robots avoid each other (Section V).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -61,6 +66,12 @@ pub struct Params {
     pub align_fade: f64,
     /// `"exit"` (default) or `"paper"`: see [`Avoidance`].
     pub avoidance: Avoidance,
+    /// `α`: rate of the safety barrier ([`crate::safety`]), 1/s. A robot may close its gap
+    /// to a neighbour's safe distance or to an obstacle's surface by at most the fraction
+    /// `α·dt` of it per step, so no two robots come closer than `2·r_ij` and no robot enters an
+    /// obstacle. `null` turns the barrier off (the paper's controller alone). Not in the
+    /// paper. Needs `α·dt ≤ 1/2`.
+    pub barrier_rate: Option<f64>,
 }
 
 impl Default for Params {
@@ -80,6 +91,7 @@ impl Default for Params {
             tol_heading: 0.02,
             align_fade: 1e-6,
             avoidance: Avoidance::Exit,
+            barrier_rate: Some(DEFAULT_BARRIER_RATE),
         }
     }
 }

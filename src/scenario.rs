@@ -14,6 +14,7 @@ use crate::error::Error;
 use crate::obstacle::Obstacle;
 use crate::params::Params;
 use crate::se2::Pose;
+use glam::DVec2;
 use serde::{Deserialize, Serialize};
 
 /// At most this many robots in a scenario.
@@ -29,6 +30,9 @@ pub const MAX_DT: f64 = 0.1;
 /// `dt · max(k_a, k_ω)` must stay below this: the alignment loop `δ̇ ≈ −k_a δ` sampled with a
 /// zero-order hold is stable for `k_a·dt < 2` and monotone for `k_a·dt < 1`.
 pub const MAX_GAIN_STEP: f64 = 1.0;
+/// `dt · barrier_rate` may be at most this: the safety barrier's guarantee needs it
+/// ([`crate::safety`]).
+pub const MAX_BARRIER_STEP: f64 = 0.5;
 /// Coordinates, radii and gains must be at most this in magnitude.
 pub const MAX_MAGNITUDE: f64 = 1e6;
 /// `bounds` may reach this far: the default box around coordinates and rings of
@@ -238,7 +242,11 @@ impl Scenario {
             finite(&field, v)?;
             positive(&field, v)?;
         }
-        for (name, v) in [("v_max", p.v_max), ("omega_max", p.omega_max)] {
+        for (name, v) in [
+            ("v_max", p.v_max),
+            ("omega_max", p.omega_max),
+            ("barrier_rate", p.barrier_rate),
+        ] {
             if let Some(v) = v {
                 let field = format!("params.{name}");
                 finite(&field, v)?;
@@ -264,6 +272,18 @@ impl Scenario {
                     MAX_GAIN_STEP / fastest
                 ),
             );
+        }
+        if let Some(rate) = p.barrier_rate {
+            if self.dt * rate > MAX_BARRIER_STEP {
+                return invalid(
+                    "dt",
+                    format!(
+                        "{} s is too large for params.barrier_rate ({rate}): dt · barrier_rate must be at most {MAX_BARRIER_STEP} (use dt ≤ {})",
+                        self.dt,
+                        MAX_BARRIER_STEP / rate
+                    ),
+                );
+            }
         }
         if self.robots.is_empty() {
             return invalid("robots", "needs at least one robot");
@@ -305,9 +325,64 @@ impl Scenario {
                     }
                 }
             }
+            let goal = r.goal_pose().p;
+            for (j, o) in self.obstacles.iter().enumerate() {
+                if goal.distance(o.center) < o.influence {
+                    return invalid(
+                        &format!("robots[{i}].goal"),
+                        format!(
+                            "lies in the influence ring of obstacles[{j}] ({} from its centre, influence {}): the ring's circular field would keep the robot from settling there; move the goal out of the ring or shrink the ring",
+                            goal.distance(o.center),
+                            o.influence
+                        ),
+                    );
+                }
+            }
+        }
+        if !self.independent {
+            let safe = 2.0 * p.safe_radius;
+            let starts: Vec<DVec2> = self.robots.iter().map(|r| r.start_pose().p).collect();
+            if let Some((i, j, d)) = closest_pair_below(&starts, safe) {
+                return invalid(
+                    &format!("robots[{j}].start"),
+                    format!("is {d} from robots[{i}].start, closer than the safe distance 2 · safe_radius = {safe}: robots may not start in each other's safe disc"),
+                );
+            }
+            let goals: Vec<DVec2> = self.robots.iter().map(|r| r.goal_pose().p).collect();
+            if let Some((i, j, d)) = closest_pair_below(&goals, safe) {
+                return invalid(
+                    &format!("robots[{j}].goal"),
+                    format!("is {d} from robots[{i}].goal, closer than the safe distance 2 · safe_radius = {safe}: both robots cannot settle there"),
+                );
+            }
         }
         Ok(())
     }
+}
+
+/// Some pair `(i, j, distance)` with `i < j` of `points` closer than `limit`, the one with the
+/// smallest `j` and then `i`; `None` if every pair is at least `limit` apart. Sorting by `x`
+/// and scanning only the window `x < x_j + limit` keeps this near `O(N log N)` for scattered
+/// points instead of comparing all pairs.
+fn closest_pair_below(points: &[DVec2], limit: f64) -> Option<(usize, usize, f64)> {
+    let mut order: Vec<usize> = (0..points.len()).collect();
+    order.sort_by(|&a, &b| points[a].x.total_cmp(&points[b].x));
+    let mut found: Option<(usize, usize, f64)> = None;
+    for (k, &a) in order.iter().enumerate() {
+        for &b in &order[k + 1..] {
+            if points[b].x - points[a].x >= limit {
+                break;
+            }
+            let d = points[a].distance(points[b]);
+            if d < limit {
+                let pair = (a.min(b), a.max(b), d);
+                if found.is_none_or(|f| (pair.1, pair.0) < (f.1, f.0)) {
+                    found = Some(pair);
+                }
+            }
+        }
+    }
+    found
 }
 
 fn invalid<T>(field: &str, message: impl Into<String>) -> Result<T, Error> {

@@ -12,29 +12,38 @@
 use crate::controller::{evaluate, Command, Evaluation};
 use crate::obstacle::Obstacle;
 use crate::params::Params;
+use crate::safety;
 use crate::scenario::Scenario;
 use crate::se2::{continue_branch, heading, wrap_angle, Pose};
+use crate::swarm::Neighbour;
 use glam::DVec2;
 use serde::Serialize;
 
 /// Below this `|ω·dt|` the arc's `sin(x)/x` is taken from its series.
 const SINC_SERIES_BELOW: f64 = 1e-4;
 
-/// Exact pose after holding `c` for `dt` from `pose` (eq. `eq_kine_nonho` integrated in closed
-/// form): the displacement is the chord `v·dt·sinc(ω·dt/2)` along the mean heading.
+/// The chord of one step: holding `(v, ω)` for `dt` from heading `theta` moves a unicycle by
+/// `v·dt·chord(theta, ω, dt)`, that is `v·dt·sinc(ω·dt/2)` along the mean heading
+/// `θ + ω·dt/2` (eq. `eq_kine_nonho` integrated in closed form over an arc).
 #[inline]
 #[must_use]
-pub fn integrate(pose: Pose, c: Command, dt: f64) -> Pose {
-    let turn = c.omega * dt;
-    let half = 0.5 * turn;
+pub fn chord(theta: f64, omega: f64, dt: f64) -> DVec2 {
+    let half = 0.5 * omega * dt;
     let sinc = if half.abs() < SINC_SERIES_BELOW {
         1.0 - half * half / 6.0
     } else {
         half.sin() / half
     };
+    sinc * heading(theta + half)
+}
+
+/// Exact pose after holding `c` for `dt` from `pose` (see [`chord`]).
+#[inline]
+#[must_use]
+pub fn integrate(pose: Pose, c: Command, dt: f64) -> Pose {
     Pose {
-        p: pose.p + c.v * dt * sinc * heading(pose.theta + half),
-        theta: wrap_angle(pose.theta + turn),
+        p: pose.p + c.v * dt * chord(pose.theta, c.omega, dt),
+        theta: wrap_angle(pose.theta + c.omega * dt),
     }
 }
 
@@ -122,7 +131,8 @@ pub struct Simulation {
     obstacle_violating: std::collections::BTreeSet<(usize, usize)>,
     // Scratch, reused every step.
     commands: Vec<Command>,
-    neighbours: Vec<DVec2>,
+    neighbours: Vec<Neighbour>,
+    speeds: Vec<f64>,
 }
 
 impl Simulation {
@@ -161,6 +171,7 @@ impl Simulation {
             obstacle_violating: Default::default(),
             commands: vec![Command::default(); n],
             neighbours: Vec::new(),
+            speeds: vec![0.0; n],
         };
         sim.evaluate_all();
         sim.observe();
@@ -201,13 +212,20 @@ impl Simulation {
     /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
     fn evaluate_all(&mut self) {
         let rs = self.params.sense_radius;
+        // Every robot sees the speeds of the same snapshot, whatever the loop order.
+        for (s, r) in self.speeds.iter_mut().zip(&self.robots) {
+            *s = r.last.command.v.abs();
+        }
         for i in 0..self.robots.len() {
             let me = self.robots[i];
             self.neighbours.clear();
             if !self.independent {
                 for (j, other) in self.robots.iter().enumerate() {
                     if j != i && other.pose.p.distance_squared(me.pose.p) <= rs * rs {
-                        self.neighbours.push(other.pose.p);
+                        self.neighbours.push(Neighbour {
+                            position: other.pose.p,
+                            speed: self.speeds[j],
+                        });
                     }
                 }
             }
@@ -219,13 +237,25 @@ impl Simulation {
                 .obstacles
                 .iter()
                 .filter(|o| o.clearance(me.pose.p) <= rs);
-            let e = evaluate(
+            let mut e = evaluate(
                 &self.params,
                 me.pose,
                 err,
-                sensed,
+                self.speeds[i],
+                sensed.clone(),
                 self.neighbours.iter().copied(),
             );
+            if let Some(rate) = self.params.barrier_rate {
+                e.command = safety::filter(
+                    me.pose,
+                    e.command,
+                    self.dt,
+                    rate * self.dt,
+                    2.0 * self.params.safe_radius,
+                    self.neighbours.iter().map(|n| n.position),
+                    sensed,
+                );
+            }
             self.robots[i].last = e;
             self.commands[i] = e.command;
         }

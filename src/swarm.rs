@@ -10,15 +10,25 @@ use crate::params::Avoidance;
 use crate::se2::heading;
 use glam::DVec2;
 
+/// Speeds are compared with this floor added (m/s), so that two robots at rest share their
+/// virtual obstacle half and half instead of dividing zero by zero.
+pub const SPEED_FLOOR: f64 = 1e-3;
+
+/// A sensed robot: where it is and how fast it moves (`|v|` of its last command).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Neighbour {
+    /// Its position `p_j`.
+    pub position: DVec2,
+    /// Its speed `|v_j|` (m/s).
+    pub speed: f64,
+}
+
 /// The virtual obstacle a robot avoids, and the distance that drives its transition `ς`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Cluster {
-    /// `p̃_o`: the centroid of the robot and the neighbours it avoids.
+    /// `p̃_o`: the point the robot circles.
     pub center: DVec2,
-    /// The distance fed to `ς` (eq. `eq_switch_func` with `R_c`): `|p_i − p̃_o|` for
-    /// [`Avoidance::Paper`]; half the distance to the nearest avoided neighbour for
-    /// [`Avoidance::Exit`], so that one close neighbour is never diluted by far ones (for a
-    /// pair the two are equal).
+    /// The distance fed to `ς` (eq. `eq_switch_func` with `R_c`): `|p_i − p̃_o|`.
     pub distance: f64,
 }
 
@@ -31,48 +41,76 @@ pub struct Approach {
     pub motion: DVec2,
     /// Its distance to its goal position.
     pub to_goal: f64,
+    /// Its speed `|v_i|` (m/s).
+    pub speed: f64,
 }
 
-/// The cluster a robot avoids among its sensed `neighbours`, or `None`.
+/// The virtual obstacle a robot avoids among its sensed `neighbours`, or `None`.
 ///
-/// Only neighbours closer than `range` ([`pair_range`]) count. With [`Avoidance::Exit`] a
-/// neighbour at distance `d` also counts only if
-/// - the robot's motion leads towards it: the case `θ_r < π/2` of eq. `eq_ob_avoid_VF` applied
+/// Only neighbours closer than `range` ([`pair_range`]) count.
+///
+/// [`Avoidance::Paper`]: the centroid of the robot and all of them (eq. `eq_tilde_p_o`).
+///
+/// [`Avoidance::Exit`]: one neighbour, the nearest of those that
+/// - the robot's motion leads towards: the case `θ_r < π/2` of eq. `eq_ob_avoid_VF` applied
 ///   to each neighbour. A robot moving away from a neighbour cannot collide with it by its own
 ///   motion, and one that ignored the rule would circle the virtual obstacle forever
 ///   (MATH-NOTES §5);
-/// - and the robot would not reach its goal first: `to_goal ≥ d − safe` with
+/// - and that the robot would not pass by reaching its goal first: `to_goal ≥ d − safe` with
 ///   `safe = 2·r_ij`. A robot settling at its goal next to a parked neighbour does not start
 ///   to circle it.
+///
+/// The virtual obstacle then lies on the segment between the two robots, dividing it in the
+/// ratio of their speeds ([`virtual_obstacle_between`]): the midpoint of eq. `eq_tilde_p_o`
+/// for two robots moving alike, the neighbour itself for a neighbour at rest. A robot
+/// circling the midpoint of a parked robot would run into it, since that circle passes
+/// through the parked robot. Taking the nearest neighbour rather than a centroid keeps the
+/// circling direction perpendicular to the closest robot, which the safety barrier guards, so
+/// the field never points at it.
 #[must_use]
 pub fn cluster(
     me: Approach,
-    neighbours: impl IntoIterator<Item = DVec2>,
+    neighbours: impl IntoIterator<Item = Neighbour>,
     range: f64,
     safe: f64,
     avoidance: Avoidance,
 ) -> Option<Cluster> {
-    let Approach {
-        position: p_i,
-        motion,
-        to_goal,
-    } = me;
-    let mut nearest = f64::INFINITY;
-    let avoided = neighbours
+    let p_i = me.position;
+    let in_range = neighbours
         .into_iter()
-        .filter(|&q| {
-            let d = q.distance(p_i);
-            d <= range
-                && (avoidance == Avoidance::Paper
-                    || (motion.dot(q - p_i) > 0.0 && to_goal >= d - safe))
-        })
-        .inspect(|q| nearest = nearest.min(q.distance(p_i)));
-    let center = virtual_obstacle(p_i, avoided)?;
-    let distance = match avoidance {
-        Avoidance::Paper => p_i.distance(center),
-        Avoidance::Exit => 0.5 * nearest,
+        .filter(move |n| n.position.distance(p_i) <= range);
+    let center = match avoidance {
+        Avoidance::Paper => virtual_obstacle(p_i, in_range.map(|n| n.position))?,
+        Avoidance::Exit => {
+            let nearest = in_range
+                .filter(|n| {
+                    let d = n.position.distance(p_i);
+                    me.motion.dot(n.position - p_i) > 0.0 && me.to_goal >= d - safe
+                })
+                .min_by(|a, b| {
+                    a.position
+                        .distance_squared(p_i)
+                        .total_cmp(&b.position.distance_squared(p_i))
+                })?;
+            virtual_obstacle_between(p_i, me.speed, nearest)
+        }
     };
-    Some(Cluster { center, distance })
+    Some(Cluster {
+        center,
+        distance: p_i.distance(center),
+    })
+}
+
+/// The point that robot `i` at `p_i` moving at `speed` and the neighbour `n` circle together:
+/// on the segment between them, `p_i + (p_j − p_i)·w_i/(w_i + w_j)` with `w = |v| + SPEED_FLOOR`.
+/// Robots circling it at the same angular rate keep their distance (eq. `eq_dot_f_ij` for the
+/// midpoint), whatever their speeds.
+#[inline]
+#[must_use]
+pub fn virtual_obstacle_between(p_i: DVec2, speed: f64, n: Neighbour) -> DVec2 {
+    let w_i = speed.abs() + SPEED_FLOOR;
+    let w_j = n.speed.abs() + SPEED_FLOOR;
+    p_i + (n.position - p_i) * (w_i / (w_i + w_j))
 }
 
 /// The virtual obstacle `p̃_o` of robot `i` at `p_i`: the centroid of `p_i` and of the
@@ -129,34 +167,69 @@ mod tests {
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
+    fn at(x: f64, y: f64) -> Neighbour {
+        Neighbour {
+            position: DVec2::new(x, y),
+            speed: 1.0,
+        }
+    }
+
     #[test]
-    fn exit_ignores_neighbours_behind_and_never_dilutes_a_close_one() {
-        let p = DVec2::ZERO;
-        let ahead = DVec2::new(2.0, 0.0);
-        let behind = [DVec2::new(-7.0, 0.5), DVec2::new(-7.0, -0.5)];
-        let all = [ahead, behind[0], behind[1]];
+    fn exit_avoids_the_nearest_neighbour_ahead_only() {
+        let ahead = at(2.0, 0.0);
+        let behind = [at(-7.0, 0.5), at(-7.0, -0.5)];
+        let all = [at(3.0, 1.0), ahead, behind[0], behind[1]];
         let me = Approach {
-            position: p,
+            position: DVec2::ZERO,
             motion: DVec2::X,
             to_goal: 20.0,
+            speed: 1.0,
         };
-        // Paper: the centroid of all four is behind the robot and 3 away.
+        // Paper: the centroid of all five, behind the robot.
         let c = cluster(me, all, 8.0, 1.0, Avoidance::Paper).unwrap();
-        assert_eq!(c.center, DVec2::new(-3.0, 0.0));
-        assert_eq!(c.distance, 3.0);
-        // Exit: only the neighbour ahead counts, at half its distance.
+        assert_close!(c.center.x, -1.8, 1e-15);
+        assert_close!(c.center.y, 0.2, 1e-15);
+        assert_close!(c.distance, c.center.length(), 1e-15);
+        // Exit: only the nearest neighbour ahead, at the midpoint (same speeds).
         let c = cluster(me, all, 8.0, 1.0, Avoidance::Exit).unwrap();
         assert_eq!(c.center, DVec2::new(1.0, 0.0));
         assert_eq!(c.distance, 1.0);
         // Moving away from everyone: nothing to avoid.
         assert_eq!(cluster(me, behind, 8.0, 1.0, Avoidance::Exit), None);
         // Out of range.
-        let far = [DVec2::new(9.0, 0.0)];
-        assert_eq!(cluster(me, far, 8.0, 1.0, Avoidance::Paper), None);
+        assert_eq!(
+            cluster(me, [at(9.0, 0.0)], 8.0, 1.0, Avoidance::Paper),
+            None
+        );
         // Settling at a goal 0.5 away, the neighbour 2 ahead (beyond 2·r_ij = 1) is left alone.
         let settling = Approach { to_goal: 0.5, ..me };
         assert_eq!(cluster(settling, [ahead], 8.0, 1.0, Avoidance::Exit), None);
         assert!(cluster(settling, [ahead], 8.0, 1.0, Avoidance::Paper).is_some());
+    }
+
+    /// A neighbour at rest is circled about itself, one moving alike about the midpoint.
+    #[test]
+    fn the_virtual_obstacle_divides_the_gap_by_speed() {
+        let p = DVec2::ZERO;
+        let parked = Neighbour {
+            position: DVec2::new(4.0, 0.0),
+            speed: 0.0,
+        };
+        let o = virtual_obstacle_between(p, 2.0, parked);
+        assert_close!(o.x, 4.0 * 2.001 / 2.002, 1e-12);
+        let alike = Neighbour {
+            speed: 2.0,
+            ..parked
+        };
+        assert_eq!(
+            virtual_obstacle_between(p, 2.0, alike),
+            DVec2::new(2.0, 0.0)
+        );
+        // Both at rest: the midpoint, not 0/0.
+        assert_eq!(
+            virtual_obstacle_between(p, 0.0, parked),
+            DVec2::new(2.0, 0.0)
+        );
     }
 
     #[test]

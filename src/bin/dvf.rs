@@ -18,6 +18,7 @@ mod cli {
     use dvf::presets::{preset, PRESETS};
     use dvf::scenario::Scenario;
     use dvf::sim::run_recorded;
+    use dvf::sweep::{sweep, Recipe};
     use std::io::Write;
     use std::path::PathBuf;
 
@@ -56,6 +57,25 @@ mod cli {
             #[arg(long, default_value_t = 21)]
             grid: usize,
         },
+        /// Run COUNT random scenarios from SEED and print the success rate, the violations and
+        /// the distribution of convergence times (JSON).
+        Sweep {
+            /// Scenario k uses seed SEED + k, so any failure is rerun with `--seed S --count 1`.
+            #[arg(long, default_value_t = 0)]
+            seed: u64,
+            /// Number of scenarios (1 … 1000000).
+            #[arg(long, default_value_t = 100)]
+            count: usize,
+            /// Robots per scenario, drawn from MIN..=MAX.
+            #[arg(long, value_name = "MIN..=MAX", default_value = "4..=16", value_parser = parse_range)]
+            robots: (usize, usize),
+            /// Obstacles per scenario, drawn from MIN..=MAX.
+            #[arg(long, value_name = "MIN..=MAX", default_value = "0..=5", value_parser = parse_range)]
+            obstacles: (usize, usize),
+            /// Write every failing scenario as DIR/seed-S.json.
+            #[arg(long, value_name = "DIR")]
+            write: Option<PathBuf>,
+        },
         /// List the presets, or print one as a scenario file with `--preset NAME`.
         Presets {
             /// Print this preset's scenario JSON (a starting point for a file of your own).
@@ -76,6 +96,26 @@ mod cli {
         /// A built-in preset (see `dvf presets`).
         #[arg(long, value_name = "NAME")]
         preset: Option<String>,
+    }
+
+    /// Largest `--count` of `dvf sweep`.
+    const MAX_SWEEP: usize = 1_000_000;
+    /// Largest robot count of `dvf sweep` (the scenario limit).
+    const MAX_SWEEP_ROBOTS: usize = dvf::scenario::MAX_ROBOTS;
+
+    /// `A..=B` (or a single number) as an inclusive range.
+    fn parse_range(text: &str) -> Result<(usize, usize), String> {
+        let (a, b) = text.split_once("..=").unwrap_or((text, text));
+        let num = |t: &str| {
+            t.trim()
+                .parse::<usize>()
+                .map_err(|_| format!("expected MIN..=MAX or a count, not {text:?}"))
+        };
+        let (a, b) = (num(a)?, num(b)?);
+        if a > b {
+            return Err(format!("{text:?}: MIN is larger than MAX"));
+        }
+        Ok((a, b))
     }
 
     impl Source {
@@ -146,6 +186,57 @@ mod cli {
                 for p in PRESETS {
                     writeln!(out, "{:<30} {}", p.name, p.summary).map_err(|e| e.to_string())?;
                 }
+            }
+            Command::Sweep {
+                seed,
+                count,
+                robots,
+                obstacles,
+                write,
+            } => {
+                if !(1..=MAX_SWEEP).contains(&count) {
+                    return Err(format!(
+                        "count: must be between 1 and {MAX_SWEEP}, not {count}"
+                    ));
+                }
+                if robots.1 > MAX_SWEEP_ROBOTS || robots.0 == 0 {
+                    return Err(format!(
+                        "robots: must be between 1 and {MAX_SWEEP_ROBOTS}, not {}..={}",
+                        robots.0, robots.1
+                    ));
+                }
+                if obstacles.1 > dvf::scenario::MAX_OBSTACLES {
+                    return Err(format!(
+                        "obstacles: at most {}, not {}",
+                        dvf::scenario::MAX_OBSTACLES,
+                        obstacles.1
+                    ));
+                }
+                let recipe = Recipe {
+                    robots: robots.0..=robots.1,
+                    obstacles: obstacles.0..=obstacles.1,
+                    ..Recipe::default()
+                };
+                if let Some(dir) = &write {
+                    std::fs::create_dir_all(dir)
+                        .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
+                }
+                let mut write_error = None;
+                let summary = sweep(&recipe, seed, count, |s, scenario, report| {
+                    let failed = report.violations > 0
+                        || report.robots.iter().any(|r| r.converged_at.is_none());
+                    if let (true, Some(dir)) = (failed, &write) {
+                        let path = dir.join(format!("seed-{s}.json"));
+                        if let Err(e) = std::fs::write(&path, scenario.to_json()) {
+                            write_error = Some(format!("{}: cannot write: {e}", path.display()));
+                        }
+                    }
+                });
+                if let Some(e) = write_error {
+                    return Err(e);
+                }
+                let json = serde_json::to_string(&summary).map_err(|e| e.to_string())?;
+                writeln!(out, "{json}").map_err(|e| e.to_string())?;
             }
             Command::Simulate { source, csv } => {
                 let s = source.load()?;

@@ -1,0 +1,223 @@
+//! The safety barrier: a limit on each robot's forward speed that keeps every pair of robots
+//! at least `2·r_ij` apart and every robot out of every obstacle disc, whatever the field
+//! asks for. Not in the paper (README, "Notes on the paper"): the paper's field alone only
+//! keeps robots apart in continuous time and for the cases its proofs cover.
+//!
+//! It is a discrete-time barrier on distances. Over one step of `dt` robot `i` moves by the
+//! chord `Δp_i = v_i·dt·c_i` of its arc (`c_i = sinc(ω_i dt/2)·(cos, sin)(θ_i + ω_i dt/2)`,
+//! see [`chord`]). For a pair at distance `d` along the unit vector
+//! `u = (p_i − p_j)/d`,
+//!
+//! ```text
+//! |p_i' − p_j'|² = d² + 2d·u·(Δp_i − Δp_j) + |Δp_i − Δp_j|² ≥ d² + 2d·u·(Δp_i − Δp_j).
+//! ```
+//!
+//! If each robot takes half of the budget, `u·Δp_i ≥ −(a/2)(d − d_s)` and
+//! `−u·Δp_j ≥ −(a/2)(d − d_s)`, then `|p_i' − p_j'|² ≥ d² − 2a·d(d − d_s)`, which is at least
+//! `d_s²` whenever `d ≥ d_s` and `a ≤ 1/2` (it factors as `(d − d_s)(d + d_s − 2ad) ≥ 0`).
+//! So a pair that starts at least `d_s` apart stays so at every step, exactly and not only in
+//! the limit `dt → 0`. An obstacle does not move: the robot takes the whole budget,
+//! `u·Δp_i ≥ −a(c − r_o)` with `c` the distance to the centre. `a = α·dt`, with `α` the
+//! barrier rate ([`crate::params::Params::barrier_rate`]).
+//!
+//! Every constraint bounds the speed along one direction and holds for `v = 0`, so the set of
+//! allowed speeds is an interval that contains 0: the filter clamps the field's speed into it
+//! and never needs to search. Steering is left to the field; the barrier only brakes.
+
+use crate::controller::Command;
+use crate::obstacle::Obstacle;
+use crate::se2::Pose;
+use crate::sim::chord;
+use glam::DVec2;
+
+/// The interval of forward speeds `[lo, hi]` (with `lo ≤ 0 ≤ hi`) under which a robot at `p`
+/// moving along `chord` keeps its share of every barrier.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpeedLimits {
+    /// Least speed (≤ 0).
+    pub lo: f64,
+    /// Greatest speed (≥ 0).
+    pub hi: f64,
+}
+
+impl SpeedLimits {
+    /// No limit.
+    pub const FREE: Self = Self {
+        lo: f64::NEG_INFINITY,
+        hi: f64::INFINITY,
+    };
+
+    /// Adds the constraint `s·(u·c) ≥ −budget` on the displacement `s = v·dt` along `c`:
+    /// `u` is the unit vector away from what is avoided, `budget ≥ 0` the allowed approach.
+    #[inline]
+    fn keep(&mut self, u: DVec2, c: DVec2, dt: f64, budget: f64) {
+        let along = u.dot(c) * dt; // d(u·Δp)/dv
+        if along < 0.0 {
+            self.hi = self.hi.min(budget / -along);
+        } else if along > 0.0 {
+            self.lo = self.lo.max(-budget / along);
+        }
+    }
+
+    /// `v` clamped into the limits.
+    #[inline]
+    #[must_use]
+    pub fn clamp(self, v: f64) -> f64 {
+        v.clamp(self.lo, self.hi)
+    }
+}
+
+/// The barrier's speed limits for a robot at `p` whose step goes along `chord`, among robots
+/// at `neighbours` (kept `safe_distance` apart, half the budget each) and `obstacles` (kept
+/// out of the disc, the whole budget), with `a = α·dt ≤ 1/2`.
+///
+/// A neighbour or obstacle already closer than its limit (a scenario that starts that way)
+/// gets a zero budget: the robot may not approach it further, but may leave.
+#[must_use]
+pub fn speed_limits<'a>(
+    p: DVec2,
+    chord: DVec2,
+    dt: f64,
+    a: f64,
+    safe_distance: f64,
+    neighbours: impl IntoIterator<Item = DVec2>,
+    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+) -> SpeedLimits {
+    let mut limits = SpeedLimits::FREE;
+    for q in neighbours {
+        let d = p.distance(q);
+        if let Some(u) = ((p - q) / d).try_normalize() {
+            limits.keep(u, chord, dt, 0.5 * a * (d - safe_distance).max(0.0));
+        }
+    }
+    for o in obstacles {
+        let c = p.distance(o.center);
+        if let Some(u) = ((p - o.center) / c).try_normalize() {
+            limits.keep(u, chord, dt, a * (c - o.radius).max(0.0));
+        }
+    }
+    limits
+}
+
+/// The command `c` with its speed clamped by the barrier (see [`speed_limits`]); the turn
+/// rate is the field's.
+#[must_use]
+pub fn filter<'a>(
+    pose: Pose,
+    c: Command,
+    dt: f64,
+    a: f64,
+    safe_distance: f64,
+    neighbours: impl IntoIterator<Item = DVec2>,
+    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+) -> Command {
+    let limits = speed_limits(
+        pose.p,
+        chord(pose.theta, c.omega, dt),
+        dt,
+        a,
+        safe_distance,
+        neighbours,
+        obstacles,
+    );
+    Command {
+        v: limits.clamp(c.v),
+        omega: c.omega,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::approx::assert_close;
+    use crate::sim::integrate;
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    /// The chord agrees with the exact arc of the simulator.
+    #[test]
+    fn chord_is_the_step_of_the_arc() {
+        for (theta, omega) in [(0.3, 0.0), (-2.0, 7.0), (3.0, -40.0)] {
+            let pose = Pose::new(1.0, -2.0, theta);
+            let next = integrate(pose, Command { v: 3.0, omega }, 0.05);
+            let step = 3.0 * 0.05 * chord(theta, omega, 0.05);
+            // Both are closed forms of the same arc: round-off only.
+            assert_close!((next.p - pose.p - step).length(), 0.0, 1e-14);
+        }
+    }
+
+    /// Two robots driven straight at each other at any speed stop outside the safe
+    /// distance, at every step, and a robot driven into a disc stops at its surface.
+    #[test]
+    fn head_on_robots_never_come_closer_than_the_safe_distance() {
+        let (dt, a, ds) = (0.1, 0.5, 2.0);
+        let mut pi = Pose::new(-5.0, 0.0, 0.0);
+        let mut pj = Pose::new(5.0, 0.0, std::f64::consts::PI);
+        let wild = Command { v: 1e3, omega: 0.0 };
+        let mut closest = f64::INFINITY;
+        for _ in 0..200 {
+            // Both commands from the same snapshot, as in the simulator.
+            let ci = filter(pi, wild, dt, a, ds, [pj.p], []);
+            let cj = filter(pj, wild, dt, a, ds, [pi.p], []);
+            pi = integrate(pi, ci, dt);
+            pj = integrate(pj, cj, dt);
+            closest = closest.min(pi.p.distance(pj.p));
+            assert!(pi.p.distance(pj.p) >= ds, "{}", pi.p.distance(pj.p));
+        }
+        // The barrier brakes, it does not freeze: the pair ends close to the limit.
+        assert!(closest < ds + 1e-3, "{closest}");
+
+        let disc = Obstacle {
+            center: DVec2::new(3.0, 0.0),
+            radius: 1.0,
+            influence: 2.0,
+        };
+        let mut r = Pose::new(-5.0, 0.0, 0.0);
+        for _ in 0..200 {
+            let c = filter(r, wild, dt, a, ds, [], [&disc]);
+            r = integrate(r, c, dt);
+            assert!(disc.clearance(r.p) >= 0.0);
+        }
+        assert!(disc.clearance(r.p) < 1e-3);
+    }
+
+    /// Random pairs, random speeds and turn rates: every step keeps the pair apart, including
+    /// when both reverse and turn fast, and zero speed is always allowed.
+    #[test]
+    fn any_commands_keep_any_pair_apart() {
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            // xorshift64*: enough for a test that needs no statistics.
+            seed ^= seed >> 12;
+            seed ^= seed << 25;
+            seed ^= seed >> 27;
+            (seed.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (dt, a, ds) = (0.02, 0.5, 2.0);
+        for _ in 0..2000 {
+            let d0 = ds + 3.0 * next();
+            let mut pi = Pose::new(0.0, 0.0, 7.0 * next());
+            let mut pj = Pose::new(d0, 0.0, 7.0 * next());
+            for _ in 0..20 {
+                let ci = Command {
+                    v: 400.0 * (next() - 0.5),
+                    omega: 100.0 * (next() - 0.5),
+                };
+                let cj = Command {
+                    v: 400.0 * (next() - 0.5),
+                    omega: 100.0 * (next() - 0.5),
+                };
+                let li = speed_limits(pi.p, chord(pi.theta, ci.omega, dt), dt, a, ds, [pj.p], []);
+                assert!(li.lo <= 0.0 && li.hi >= 0.0);
+                let (fi, fj) = (
+                    filter(pi, ci, dt, a, ds, [pj.p], []),
+                    filter(pj, cj, dt, a, ds, [pi.p], []),
+                );
+                pi = integrate(pi, fi, dt);
+                pj = integrate(pj, fj, dt);
+                // Relative tolerance of a few ulps of the squared distance.
+                assert!(pi.p.distance(pj.p) >= ds * (1.0 - 1e-12));
+            }
+        }
+    }
+}

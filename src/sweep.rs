@@ -1,0 +1,300 @@
+//! Random scenarios and their statistics: the evidence that the planner keeps its promises on
+//! scenes nobody tuned for.
+//!
+//! [`random_scenario`] draws `robots` robots and `obstacles` circular obstacles in a square
+//! area; starts (and goals) are at least `separation` apart from each other and outside every
+//! obstacle's influence ring, headings are uniform. Obstacles may overlap each other. Scenario
+//! `k` of a sweep from seed `s` depends only on `s + k`, so a failure is reproduced from its
+//! seed alone (`dvf sweep --seed S+k --count 1 --write DIR`).
+
+use crate::obstacle::Obstacle;
+use crate::params::Params;
+use crate::scenario::{RobotSpec, Scenario};
+use crate::sim::{self, Report};
+use glam::DVec2;
+use rand::{Rng, SeedableRng};
+use rand_pcg::Pcg64;
+use serde::Serialize;
+use std::f64::consts::PI;
+use std::ops::RangeInclusive;
+
+/// Give up placing a pose after this many rejected draws (the area is too crowded).
+const MAX_DRAWS: usize = 100_000;
+
+/// What [`random_scenario`] draws from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Recipe {
+    /// Number of robots, drawn uniformly from this range.
+    pub robots: RangeInclusive<usize>,
+    /// Number of obstacles, drawn uniformly from this range.
+    pub obstacles: RangeInclusive<usize>,
+    /// Side of the square area `[0, side]²` (m) that holds starts, goals and obstacle centres.
+    pub side: f64,
+    /// Obstacle disc radius `r_o` (m), uniform.
+    pub obstacle_radius: RangeInclusive<f64>,
+    /// Width of the influence ring `R_o − r_o` (m), uniform.
+    pub ring_width: RangeInclusive<f64>,
+    /// Least distance between two starts and between two goals, in units of `safe_radius`.
+    pub separation: f64,
+    /// Simulated seconds.
+    pub duration: f64,
+    /// The method's parameters.
+    pub params: Params,
+}
+
+impl Default for Recipe {
+    /// 4 to 16 robots and 0 to 5 obstacles (`r_o` 1 … 8, rings 1 … 5 wide) in a 100 × 100
+    /// area, poses `3·safe_radius` apart, 120 s, default parameters.
+    fn default() -> Self {
+        Self {
+            robots: 4..=16,
+            obstacles: 0..=5,
+            side: 100.0,
+            obstacle_radius: 1.0..=8.0,
+            ring_width: 1.0..=5.0,
+            separation: 3.0,
+            duration: 120.0,
+            params: Params::default(),
+        }
+    }
+}
+
+/// Scenario number `seed` of `recipe`, or `None` if its poses could not be placed (the recipe
+/// asks for more room than the area has).
+#[must_use]
+pub fn random_scenario(recipe: &Recipe, seed: u64) -> Option<Scenario> {
+    let mut rng = Pcg64::seed_from_u64(seed);
+    let side = recipe.side;
+    let n_obstacles = rng.random_range(recipe.obstacles.clone());
+    let obstacles: Vec<Obstacle> = (0..n_obstacles)
+        .map(|_| {
+            let center = DVec2::new(rng.random_range(0.0..side), rng.random_range(0.0..side));
+            let radius = rng.random_range(recipe.obstacle_radius.clone());
+            let influence = radius + rng.random_range(recipe.ring_width.clone());
+            Obstacle {
+                center,
+                radius,
+                influence,
+            }
+        })
+        .collect();
+    let n_robots = rng.random_range(recipe.robots.clone());
+    let gap = recipe.separation * recipe.params.safe_radius;
+    let mut place = |taken: &[DVec2]| -> Option<DVec2> {
+        (0..MAX_DRAWS).find_map(|_| {
+            let p = DVec2::new(rng.random_range(0.0..side), rng.random_range(0.0..side));
+            let free = obstacles.iter().all(|o| p.distance(o.center) > o.influence)
+                && taken.iter().all(|q| p.distance(*q) >= gap);
+            free.then_some(p)
+        })
+    };
+    let mut starts = Vec::with_capacity(n_robots);
+    let mut goals = Vec::with_capacity(n_robots);
+    for _ in 0..n_robots {
+        starts.push(place(&starts)?);
+        goals.push(place(&goals)?);
+    }
+    let robots = starts
+        .iter()
+        .zip(&goals)
+        .map(|(s, g)| RobotSpec {
+            start: [s.x, s.y, rng.random_range(-PI..PI)],
+            goal: [g.x, g.y, rng.random_range(-PI..PI)],
+        })
+        .collect();
+    Some(Scenario {
+        name: format!("random scenario, seed {seed}"),
+        bounds: None,
+        duration: recipe.duration,
+        dt: 0.01,
+        params: recipe.params.clone(),
+        independent: false,
+        robots,
+        obstacles,
+    })
+}
+
+/// One scenario of a sweep that did not keep every promise.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Failure {
+    /// Its seed: `random_scenario(recipe, seed)` rebuilds it.
+    pub seed: u64,
+    /// Robots that had not converged at the end.
+    pub unconverged: usize,
+    /// Violation events (see [`Report::violations`]).
+    pub violations: usize,
+}
+
+/// What a sweep found.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Summary {
+    /// First seed.
+    pub seed: u64,
+    /// Scenarios run.
+    pub scenarios: usize,
+    /// Robots over all scenarios.
+    pub robots: usize,
+    /// Robots that converged (within tolerance from some time to the end).
+    pub converged: usize,
+    /// `converged / robots`.
+    pub success_rate: f64,
+    /// Violation events over all scenarios.
+    pub violations: usize,
+    /// Scenarios whose poses could not be placed (not run).
+    pub skipped: usize,
+    /// Quantiles of the convergence time of converged robots (s): min, 10 %, median, 90 %, max.
+    pub convergence_time: Quantiles,
+    /// Every scenario with an unconverged robot or a violation.
+    pub failures: Vec<Failure>,
+}
+
+/// Order statistics of a sample.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct Quantiles {
+    /// Smallest value.
+    pub min: f64,
+    /// 10th percentile.
+    pub p10: f64,
+    /// Median.
+    pub p50: f64,
+    /// 90th percentile.
+    pub p90: f64,
+    /// Largest value.
+    pub max: f64,
+}
+
+impl Quantiles {
+    /// Nearest-rank quantiles of `values` (all zero when empty).
+    #[must_use]
+    pub fn of(mut values: Vec<f64>) -> Self {
+        if values.is_empty() {
+            return Self::default();
+        }
+        values.sort_by(f64::total_cmp);
+        let at = |q: f64| values[((values.len() - 1) as f64 * q).round() as usize];
+        Self {
+            min: at(0.0),
+            p10: at(0.1),
+            p50: at(0.5),
+            p90: at(0.9),
+            max: at(1.0),
+        }
+    }
+}
+
+/// Runs scenarios `seed, seed + 1, …` (`count` of them) and summarises them. `on_report`
+/// sees each run (for progress or for writing failures out).
+pub fn sweep(
+    recipe: &Recipe,
+    seed: u64,
+    count: usize,
+    mut on_report: impl FnMut(u64, &Scenario, &Report),
+) -> Summary {
+    let mut robots = 0;
+    let mut converged = 0;
+    let mut violations = 0;
+    let mut skipped = 0;
+    let mut times = Vec::new();
+    let mut failures = Vec::new();
+    for k in 0..count as u64 {
+        let s = seed.wrapping_add(k);
+        let Some(scenario) = random_scenario(recipe, s) else {
+            skipped += 1;
+            continue;
+        };
+        let report = sim::run(&scenario);
+        let done: Vec<f64> = report
+            .robots
+            .iter()
+            .filter_map(|r| r.converged_at)
+            .collect();
+        let unconverged = report.robots.len() - done.len();
+        robots += report.robots.len();
+        converged += done.len();
+        violations += report.violations;
+        times.extend(done);
+        if unconverged > 0 || report.violations > 0 {
+            failures.push(Failure {
+                seed: s,
+                unconverged,
+                violations: report.violations,
+            });
+        }
+        on_report(s, &scenario, &report);
+    }
+    Summary {
+        seed,
+        scenarios: count - skipped,
+        robots,
+        converged,
+        success_rate: if robots == 0 {
+            1.0
+        } else {
+            converged as f64 / robots as f64
+        },
+        violations,
+        skipped,
+        convergence_time: Quantiles::of(times),
+        failures,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    #[test]
+    fn random_scenarios_keep_the_recipe() {
+        let recipe = Recipe::default();
+        for seed in 0..200 {
+            let s = random_scenario(&recipe, seed).expect("room for 16 robots");
+            assert!(recipe.robots.contains(&s.robots.len()));
+            assert!(recipe.obstacles.contains(&s.obstacles.len()));
+            s.validate().expect("a random scenario is valid");
+            let gap = recipe.separation * recipe.params.safe_radius;
+            for (i, a) in s.robots.iter().enumerate() {
+                for p in [a.start_pose().p, a.goal_pose().p] {
+                    assert!(s
+                        .obstacles
+                        .iter()
+                        .all(|o| p.distance(o.center) > o.influence));
+                }
+                for b in &s.robots[..i] {
+                    assert!(a.start_pose().p.distance(b.start_pose().p) >= gap);
+                    assert!(a.goal_pose().p.distance(b.goal_pose().p) >= gap);
+                }
+            }
+        }
+        // The same seed gives the same scenario; another seed another one.
+        assert_eq!(random_scenario(&recipe, 7), random_scenario(&recipe, 7));
+        assert_ne!(random_scenario(&recipe, 7), random_scenario(&recipe, 8));
+    }
+
+    #[test]
+    fn an_impossible_recipe_is_refused_not_looped() {
+        let recipe = Recipe {
+            robots: 50..=50,
+            side: 5.0,
+            ..Recipe::default()
+        };
+        assert_eq!(random_scenario(&recipe, 1), None);
+    }
+
+    #[test]
+    fn quantiles_by_nearest_rank() {
+        let q = Quantiles::of((0..=10).rev().map(f64::from).collect());
+        assert_eq!(
+            q,
+            Quantiles {
+                min: 0.0,
+                p10: 1.0,
+                p50: 5.0,
+                p90: 9.0,
+                max: 10.0
+            }
+        );
+        assert_eq!(Quantiles::of(vec![]), Quantiles::default());
+    }
+}
