@@ -376,7 +376,7 @@ fn closest_pair_below(points: &[DVec2], limit: f64) -> Option<(usize, usize, f64
             let d = points[a].distance(points[b]);
             if d < limit {
                 let pair = (a.min(b), a.max(b), d);
-                if found.is_none_or(|f| (pair.1, pair.0) < (f.1, f.0)) {
+                if found.map_or(true, |f| (pair.1, pair.0) < (f.1, f.0)) {
                     found = Some(pair);
                 }
             }

@@ -107,7 +107,7 @@ pub fn random_scenario(recipe: &Recipe, seed: u64) -> Option<Scenario> {
         bounds: None,
         duration: recipe.duration,
         dt: 0.01,
-        params: recipe.params.clone(),
+        params: recipe.params,
         independent: false,
         robots,
         obstacles,
