@@ -23,7 +23,7 @@
 //! eq. `eq_nonholo_controller_co_avoid`.
 
 use crate::field::goal_field_body;
-use crate::obstacle::{blend, Obstacle};
+use crate::obstacle::{blend, goal_first, transition, Obstacle};
 use crate::params::{Avoidance, Params};
 use crate::se2::{heading, rotate, unrotate, Pose};
 use crate::swarm::{cluster, pair_range, tangent_field, Approach, Neighbour};
@@ -126,14 +126,18 @@ pub fn command(
 /// is the robot's own `|v|` (its last command) and each neighbour carries its own: they place
 /// the virtual obstacle ([`crate::swarm::cluster`]).
 #[must_use]
-pub fn evaluate<'a>(
+pub fn evaluate<'a, I>(
     params: &Params,
     pose: Pose,
     err: Pose,
     speed: f64,
-    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+    obstacles: I,
     neighbours: impl IntoIterator<Item = Neighbour>,
-) -> Evaluation {
+) -> Evaluation
+where
+    I: IntoIterator<Item = &'a Obstacle>,
+    I::IntoIter: Clone,
+{
     let theta = pose.theta;
     let eps = params.transition_width;
     let goal_body = goal_field_body(err);
@@ -167,8 +171,10 @@ pub fn evaluate<'a>(
     // The virtual obstacle and its ς_c, while it has any influence (ς_c < 1).
     let avoiding = vo
         .map(|c| {
-            let s = crate::obstacle::transition(c.distance, params.avoid_radius, eps);
-            (c.center, s)
+            let s = transition(c.distance, params.avoid_radius, eps);
+            // Let go of a neighbour whose safe disc is farther than the goal (Exit only).
+            let go = c.clearance.map_or(0.0, |cl| goal_first(cl, to_goal, eps));
+            (c.center, 1.0 - (1.0 - s) * (1.0 - go))
         })
         .filter(|&(_, s)| s < 1.0);
 

@@ -101,31 +101,68 @@ pub fn avoidance_field(gamma_r: DVec2, motion: DVec2, goal_field: DVec2) -> DVec
 /// `Γ_P = (Π ς_i) Γ̃_d + Σ (1 − ς_i) Γ_oi`. Returns `(Γ_P, Π ς_i)`; the product also scales the
 /// attitude feedback of eq. `eq_nonholo_controller_ob_avoid`.
 ///
-/// With `to_goal = Some(distance to the goal position)` an obstacle whose surface is farther
-/// than the goal is let go ([`goal_first`]): without that, a goal in the transition band
-/// `R_o < |p_d − p_o| < R_o + ε` would hold the robot in a spurious equilibrium next to it
-/// (the circular field does not vanish at the goal, the goal field does). `None` is the
-/// paper's blend.
+/// `exit = Some(distance to the goal position)` adds two exits the paper lacks (`None` is the
+/// paper's blend):
+/// - an obstacle whose surface is farther than the goal is let go ([`goal_first`]): without
+///   that, a goal in the transition band `R_o < |p_d − p_o| < R_o + ε` would hold the robot
+///   in a spurious equilibrium next to it (the circular field does not vanish at the goal, the
+///   goal field does);
+/// - an obstacle the robot moves away from drops out of the blend rather than adding the goal
+///   field with the weight `1 − ς` (which, with several obstacles, can outweigh the ring the
+///   robot is in and push it into a disc);
+/// - every obstacle circled turns the same way as the nearest one (by clearance), so that
+///   overlapping rings are rounded as one: in the notch between two discs their circular
+///   fields, each turned by its own `θ_r` rule, point into the notch from both sides and sum
+///   to a field that holds the robot there; turned alike they sum to a field along it.
 #[must_use]
-pub fn blend<'a>(
+pub fn blend<'a, I>(
     p: DVec2,
     motion: DVec2,
     goal_field: DVec2,
-    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+    obstacles: I,
     eps: f64,
-    to_goal: Option<f64>,
-) -> (DVec2, f64) {
+    exit: Option<f64>,
+) -> (DVec2, f64)
+where
+    I: IntoIterator<Item = &'a Obstacle>,
+    I::IntoIter: Clone,
+{
+    let obstacles = obstacles.into_iter();
+    // The turning sense (+1 counter-clockwise) of the nearest obstacle that is circled.
+    let sense = exit.and_then(|_| {
+        obstacles
+            .clone()
+            .filter(|o| transition(p.distance(o.center), o.influence, eps) < 1.0)
+            .filter(|o| classify(motion, p - o.center) != Approach::Clear)
+            .min_by(|a, b| a.clearance(p).total_cmp(&b.clearance(p)))
+            .map(|o| {
+                let gamma_r = p - o.center;
+                avoidance_field(gamma_r, motion, goal_field)
+                    .dot(gamma_r.perp())
+                    .signum()
+            })
+    });
     let mut keep = 1.0;
     let mut sum = DVec2::ZERO;
     for o in obstacles {
         let gamma_r = p - o.center;
         let mut s = transition(gamma_r.length(), o.influence, eps);
-        if let Some(g) = to_goal {
+        if let Some(g) = exit {
             s = 1.0 - (1.0 - s) * (1.0 - goal_first(o.clearance(p), g, eps));
+        }
+        // Exit: an obstacle the robot moves away from has no say (ς = 1), which for one
+        // obstacle is the paper's `Γ_o = Γ̃_d` and for several keeps such an obstacle's
+        // `(1 − ς)·Γ̃_d` from outweighing the ring of another that the robot is entering.
+        if exit.is_some() && classify(motion, gamma_r) == Approach::Clear {
+            continue;
         }
         if s < 1.0 {
             keep *= s;
-            sum += (1.0 - s) * avoidance_field(gamma_r, motion, goal_field);
+            let field = match (sense, classify(motion, gamma_r)) {
+                (Some(sigma), Approach::Tangent | Approach::HeadOn) => sigma * gamma_r.perp(),
+                _ => avoidance_field(gamma_r, motion, goal_field),
+            };
+            sum += (1.0 - s) * field;
         }
     }
     (keep * goal_field + sum, keep)

@@ -30,6 +30,11 @@ pub struct Cluster {
     pub center: DVec2,
     /// The distance fed to `ς` (eq. `eq_switch_func` with `R_c`): `|p_i − p̃_o|`.
     pub distance: f64,
+    /// [`Avoidance::Exit`]: how far the robot is from the avoided neighbour's safe disc,
+    /// `d − 2·r_ij`. The controller lets the neighbour go, as it does an obstacle
+    /// ([`crate::obstacle::goal_first`]), when the goal is nearer than that. `None` for the
+    /// paper's avoidance.
+    pub clearance: Option<f64>,
 }
 
 /// What a robot knows of itself when it picks the neighbours to avoid.
@@ -51,14 +56,11 @@ pub struct Approach {
 ///
 /// [`Avoidance::Paper`]: the centroid of the robot and all of them (eq. `eq_tilde_p_o`).
 ///
-/// [`Avoidance::Exit`]: one neighbour, the nearest of those that
-/// - the robot's motion leads towards: the case `θ_r < π/2` of eq. `eq_ob_avoid_VF` applied
-///   to each neighbour. A robot moving away from a neighbour cannot collide with it by its own
-///   motion, and one that ignored the rule would circle the virtual obstacle forever
-///   (MATH-NOTES §5);
-/// - and that the robot would not pass by reaching its goal first: `to_goal ≥ d − safe` with
-///   `safe = 2·r_ij`. A robot settling at its goal next to a parked neighbour does not start
-///   to circle it.
+/// [`Avoidance::Exit`]: one neighbour, the nearest of those that the robot's motion leads
+/// towards: the case `θ_r < π/2` of eq. `eq_ob_avoid_VF` applied to each neighbour. A robot
+/// moving away from a neighbour cannot collide with it by its own motion, and one that ignored
+/// the rule would circle the virtual obstacle forever (MATH-NOTES §5). Its
+/// [`Cluster::clearance`] lets a robot settle at a goal next to a parked neighbour.
 ///
 /// The virtual obstacle then lies on the segment between the two robots, dividing it in the
 /// ratio of their speeds ([`virtual_obstacle_between`]): the midpoint of eq. `eq_tilde_p_o`
@@ -79,25 +81,26 @@ pub fn cluster(
     let in_range = neighbours
         .into_iter()
         .filter(move |n| n.position.distance(p_i) <= range);
-    let center = match avoidance {
-        Avoidance::Paper => virtual_obstacle(p_i, in_range.map(|n| n.position))?,
+    let (center, clearance) = match avoidance {
+        Avoidance::Paper => (virtual_obstacle(p_i, in_range.map(|n| n.position))?, None),
         Avoidance::Exit => {
             let nearest = in_range
-                .filter(|n| {
-                    let d = n.position.distance(p_i);
-                    me.motion.dot(n.position - p_i) > 0.0 && me.to_goal >= d - safe
-                })
+                .filter(|n| me.motion.dot(n.position - p_i) > 0.0)
                 .min_by(|a, b| {
                     a.position
                         .distance_squared(p_i)
                         .total_cmp(&b.position.distance_squared(p_i))
                 })?;
-            virtual_obstacle_between(p_i, me.speed, nearest)
+            (
+                virtual_obstacle_between(p_i, me.speed, nearest),
+                Some(nearest.position.distance(p_i) - safe),
+            )
         }
     };
     Some(Cluster {
         center,
         distance: p_i.distance(center),
+        clearance,
     })
 }
 
@@ -201,10 +204,10 @@ mod tests {
             cluster(me, [at(9.0, 0.0)], 8.0, 1.0, Avoidance::Paper),
             None
         );
-        // Settling at a goal 0.5 away, the neighbour 2 ahead (beyond 2·r_ij = 1) is left alone.
-        let settling = Approach { to_goal: 0.5, ..me };
-        assert_eq!(cluster(settling, [ahead], 8.0, 1.0, Avoidance::Exit), None);
-        assert!(cluster(settling, [ahead], 8.0, 1.0, Avoidance::Paper).is_some());
+        // The clearance to the neighbour's safe disc (2 − 1) lets a settling robot go.
+        assert_eq!(c.clearance, Some(1.0));
+        let c = cluster(me, all, 8.0, 1.0, Avoidance::Paper).unwrap();
+        assert_eq!(c.clearance, None);
     }
 
     /// A neighbour at rest is circled about itself, one moving alike about the midpoint.
