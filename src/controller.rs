@@ -158,6 +158,7 @@ where
     let me = Approach {
         position: pose.p,
         motion,
+        field: gp,
         to_goal,
         speed,
     };
@@ -174,14 +175,15 @@ where
             let s = transition(c.distance, params.avoid_radius, eps);
             // Let go of a neighbour whose safe disc is farther than the goal (Exit only).
             let go = c.clearance.map_or(0.0, |cl| goal_first(cl, to_goal, eps));
-            (c.center, 1.0 - (1.0 - s) * (1.0 - go))
+            let side = c.at_rest.then_some(gp);
+            (c.center, 1.0 - (1.0 - s) * (1.0 - go), side)
         })
-        .filter(|&(_, s)| s < 1.0);
+        .filter(|&(_, s, _)| s < 1.0);
 
     let gp_body = unrotate(theta, gp);
     let (field, v, delta, keep_c) = match avoiding {
-        Some((o, keep_c)) => {
-            let t = tangent_field(pose.p, theta, o);
+        Some((o, keep_c, side)) => {
+            let t = tangent_field(pose.p, theta, o, side);
             let field = keep_c * gp + (1.0 - keep_c) * t;
             let fb = unrotate(theta, field);
             let v = params.k_v * keep_c * gp_body.x + (1.0 - keep_c) * params.avoid_speed;
@@ -201,7 +203,7 @@ where
         goal_field: goal_world,
         obstacle_keep: keep_o,
         robot_keep: keep_c,
-        virtual_obstacle: avoiding.map(|(o, _)| o),
+        virtual_obstacle: avoiding.map(|(o, _, _)| o),
     }
 }
 

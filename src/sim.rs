@@ -245,17 +245,15 @@ impl Simulation {
                 sensed.clone(),
                 self.neighbours.iter().copied(),
             );
-            if let Some(rate) = self.params.barrier_rate {
-                e.command = safety::filter(
-                    me.pose,
-                    e.command,
-                    self.dt,
-                    rate * self.dt,
-                    2.0 * self.params.safe_radius,
-                    self.neighbours.iter().map(|n| n.position),
-                    sensed,
-                );
-            }
+            e.command = safety::filter(
+                &self.params,
+                self.dt,
+                me.pose,
+                e.command,
+                e.field,
+                self.neighbours.iter().map(|n| n.position),
+                sensed,
+            );
             self.robots[i].last = e;
             self.commands[i] = e.command;
         }
@@ -265,7 +263,15 @@ impl Simulation {
     pub fn step(&mut self) {
         for (r, c) in self.robots.iter_mut().zip(&self.commands) {
             r.pose = integrate(r.pose, *c, self.dt);
-            r.heading_error = continue_branch(r.heading_error, r.pose.theta, r.goal.theta);
+            // Continued while the robot follows its goal field; back on the principal branch
+            // while it circles robots, where the attitude feedback is faded out and the heading
+            // error could otherwise run on to where the continued field points away from the
+            // goal.
+            r.heading_error = if r.last.robot_keep < 1.0 {
+                wrap_angle(r.pose.theta - r.goal.theta)
+            } else {
+                continue_branch(r.heading_error, r.pose.theta, r.goal.theta)
+            };
         }
         self.steps += 1;
         self.time = self.steps as f64 * self.dt;

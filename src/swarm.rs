@@ -35,7 +35,15 @@ pub struct Cluster {
     /// ([`crate::obstacle::goal_first`]), when the goal is nearer than that. `None` for the
     /// paper's avoidance.
     pub clearance: Option<f64>,
+    /// [`Avoidance::Exit`]: the neighbour is at rest next to the robot (it moves at most a
+    /// tenth as fast), so the robot goes round it on the side of its own field, as round an
+    /// obstacle, rather than by the turn-left rule meant for two robots that both give way.
+    pub at_rest: bool,
 }
+
+/// A neighbour moving at most this fraction of the robot's speed is at rest for
+/// [`Cluster::at_rest`].
+pub const AT_REST_RATIO: f64 = 0.1;
 
 /// What a robot knows of itself when it picks the neighbours to avoid.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,6 +52,8 @@ pub struct Approach {
     pub position: DVec2,
     /// Its direction of motion under the goal field (heading times the sign of the speed).
     pub motion: DVec2,
+    /// The field it would follow without robots to avoid (`Γ_P`, world frame).
+    pub field: DVec2,
     /// Its distance to its goal position.
     pub to_goal: f64,
     /// Its speed `|v_i|` (m/s).
@@ -81,11 +91,18 @@ pub fn cluster(
     let in_range = neighbours
         .into_iter()
         .filter(move |n| n.position.distance(p_i) <= range);
-    let (center, clearance) = match avoidance {
-        Avoidance::Paper => (virtual_obstacle(p_i, in_range.map(|n| n.position))?, None),
+    let (center, clearance, at_rest) = match avoidance {
+        Avoidance::Paper => (
+            virtual_obstacle(p_i, in_range.map(|n| n.position))?,
+            None,
+            false,
+        ),
         Avoidance::Exit => {
             let nearest = in_range
-                .filter(|n| me.motion.dot(n.position - p_i) > 0.0)
+                .filter(|n| {
+                    let to = n.position - p_i;
+                    me.motion.dot(to) > 0.0 && me.field.dot(to) > 0.0
+                })
                 .min_by(|a, b| {
                     a.position
                         .distance_squared(p_i)
@@ -94,6 +111,7 @@ pub fn cluster(
             (
                 virtual_obstacle_between(p_i, me.speed, nearest),
                 Some(nearest.position.distance(p_i) - safe),
+                nearest.speed + SPEED_FLOOR <= AT_REST_RATIO * (me.speed + SPEED_FLOOR),
             )
         }
     };
@@ -101,6 +119,7 @@ pub fn cluster(
         center,
         distance: p_i.distance(center),
         clearance,
+        at_rest,
     })
 }
 
@@ -146,13 +165,22 @@ pub fn pair_range(avoid_radius: f64, eps: f64) -> f64 {
 ///
 /// The paper leaves the case of a zero projection open (the robot's heading already tangent);
 /// here the robot then keeps the tangent along its heading.
+///
+/// With `side = Some(Γ)` the tangent with a positive projection on `Γ` is taken instead (the
+/// rule of the obstacle field, for a neighbour at rest), the paper's rule on a tie.
 #[inline]
 #[must_use]
-pub fn tangent_field(p_i: DVec2, theta: f64, p_o: DVec2) -> DVec2 {
+pub fn tangent_field(p_i: DVec2, theta: f64, p_o: DVec2, side: Option<DVec2>) -> DVec2 {
     let gamma_r = p_i - p_o;
-    let e = heading(theta);
     let ccw = gamma_r.perp(); // R(π/2)Γ_ri
-                              // ⟨σ R(π/2)Γ, R(π/2)e⟩ = σ⟨Γ, e⟩.
+    if let Some(toward) = side {
+        let s = ccw.dot(toward);
+        if s != 0.0 {
+            return s.signum() * ccw;
+        }
+    }
+    let e = heading(theta);
+    // ⟨σ R(π/2)Γ, R(π/2)e⟩ = σ⟨Γ, e⟩.
     let s = gamma_r.dot(e);
     if s > 0.0 || (s == 0.0 && ccw.dot(e) >= 0.0) {
         ccw
@@ -185,6 +213,7 @@ mod tests {
         let me = Approach {
             position: DVec2::ZERO,
             motion: DVec2::X,
+            field: DVec2::X,
             to_goal: 20.0,
             speed: 1.0,
         };
@@ -252,8 +281,8 @@ mod tests {
         let pi = DVec2::new(-2.0, 0.0);
         let pj = DVec2::new(2.0, 0.0);
         let o = virtual_obstacle(pi, [pj]).unwrap();
-        let gi = tangent_field(pi, 0.0, o);
-        let gj = tangent_field(pj, PI, o);
+        let gi = tangent_field(pi, 0.0, o, None);
+        let gj = tangent_field(pj, PI, o, None);
         // Positive projection on each body Y axis.
         assert!(gi.dot(heading(FRAC_PI_2)) > 0.0);
         assert!(gj.dot(heading(PI + FRAC_PI_2)) > 0.0);
@@ -267,7 +296,7 @@ mod tests {
         for k in 0..24 {
             let t = k as f64 * 0.27;
             let p = DVec2::new(1.0, 2.0);
-            let g = tangent_field(p, t, DVec2::new(-0.5, 0.3));
+            let g = tangent_field(p, t, DVec2::new(-0.5, 0.3), None);
             assert_close!(g.dot(p - DVec2::new(-0.5, 0.3)), 0.0, 1e-12);
             assert!(g.dot(heading(t + FRAC_PI_2)) >= 0.0);
         }
