@@ -90,6 +90,7 @@ const TEMPLATE = `
       <canvas data-id="canvas" tabindex="0" role="application"
         aria-label="Playground canvas. Drag robots, goals and obstacles; keys: Space play, S step, R reset, arrows move, Q and E turn, A add robot, O add obstacle, Delete, brackets select, F fit."></canvas>
       <div class="clock" data-id="clock"></div>
+      <div class="title" data-id="title"></div>
       <div class="hint" data-id="hint"></div>
     </div>
     <aside class="side full">
@@ -513,6 +514,8 @@ export class DvfPlayground extends HTMLElement {
     drawScene(ctx, view, scene);
     this.$('clock').textContent = `t = ${c.time.toFixed(2)} s / ${c.duration.toFixed(2)} s${this.playing ? '' : ' (paused)'}`;
     this.$('hint').textContent = this.hintText();
+    // Free text from the scenario: textContent only, never HTML.
+    this.$('title').textContent = c.scenario.name;
     if (this.hasAttribute('controls')) {
       this.drawPlots(scene);
       this.showRobotInfo();

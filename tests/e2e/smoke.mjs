@@ -1,209 +1,285 @@
-// End-to-end smoke test of the page as users load it: the RELEASE wasm package in www/pkg
+// End-to-end tests of the main page as users load it: the RELEASE wasm package in www/pkg
 // (`make build-wasm`), served by python3's http.server, driven in Debian's Chromium.
-// Fails (exit 1) on any console error or warning, any page error, a blank canvas, or a preset
-// switch that does not change the picture. Screenshots go to test-results/.
+// Checks: no console error or warning; high-DPI canvas; dragging a robot bends its predicted
+// path (pixels and scenario); undo/redo; presets; parameters; keyboard; the URL fragment
+// round trip; bad fragments; scenario names as text; exports (JSON, CSV, PNG) and import.
+// Prints two figures (not timed assertions): the time to recompute example 4's predicted
+// paths, and the frame rate while dragging. Screenshots go to test-results/, and the
+// README's picture to docs/playground.png.
 //
 // Run: make test-e2e   (or: node tests/e2e/smoke.mjs after make build-wasm)
 
-import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync } from 'node:fs';
-import { createServer } from 'node:net';
-import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { readFileSync } from 'node:fs';
+import {
+  RESULTS, ROOT, canvasStats, changedFraction, check, checkQuiet, frames, join, run, scenarioOf,
+  waitLoaded,
+} from './lib.mjs';
 
-const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const WWW = join(ROOT, 'www');
-const RESULTS = join(ROOT, 'test-results');
-const CHROMIUM = '/usr/bin/chromium';
-const CHROMIUM_ARGS = [
-  '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync',
-];
 const VIEWPORT = { width: 1280, height: 800 };
 /** High-DPI on purpose: the canvas must size its backing store by devicePixelRatio. */
 const DEVICE_SCALE_FACTOR = 2;
-const SERVER_START_TIMEOUT_MS = 10_000;
-const PAGE_TIMEOUT_MS = 20_000;
-/** A drawn run has at least this many coloured (robot trail) device pixels. */
-const MIN_COLOURED_PIXELS = 2_000;
-/** A pixel is "coloured" when its channels spread by more than this (greys spread ~0). */
-const COLOURED_SPREAD = 60;
-/** Two different presets differ in at least this fraction of device pixels. */
-const MIN_CHANGED_FRACTION = 0.01;
+const BENCH_PRESET = 'example4-obstacle-formation';
 const SECOND_PRESET = 'example3-circle-swap';
+/** Predictions timed for the benchmark (after WARMUP untimed ones). */
+const BENCH_RUNS = 30;
+const WARMUP = 5;
+/** Mouse moves in the timed drag. */
+const DRAG_MOVES = 60;
+/** A drawn scene has at least this many coloured device pixels. */
+const MIN_COLOURED_PIXELS = 2_000;
+/** A real change of the picture touches at least this fraction of 8×8 blocks. */
+const MIN_CHANGED_FRACTION = 0.002;
+const PG = 'dvf-playground';
 
-const failures = [];
-const check = (ok, message) => {
-  if (ok) console.log(`ok   ${message}`);
-  else {
-    console.log(`FAIL ${message}`);
-    failures.push(message);
+/** A locator inside the playground's shadow root (Playwright's CSS pierces open shadow roots). */
+const part = (page, id) => page.locator(`${PG} [data-id="${id}"]`);
+
+await run(async ({ base, newPage }) => {
+  const page = await newPage({ viewport: VIEWPORT, deviceScaleFactor: DEVICE_SCALE_FACTOR });
+  await page.goto(`${base}/`);
+  await waitLoaded(page);
+  await page.waitForSelector('body[data-ready]');
+  const defaultName = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.defaultPreset()));
+  check(await part(page, 'preset').inputValue() === defaultName, `the page opens on the default preset (${defaultName})`);
+  await page.screenshot({ path: join(RESULTS, 'main-default.png') });
+
+  const a = await canvasStats(page);
+  check(a.dpr === DEVICE_SCALE_FACTOR && Math.abs(a.width - a.cssWidth * a.dpr) <= 1,
+    `canvas backing store follows devicePixelRatio (${a.width} px for ${a.cssWidth} CSS px at ${a.dpr}×)`);
+  check(a.coloured >= MIN_COLOURED_PIXELS, `the scene is drawn (${a.coloured} coloured pixels)`);
+  check(await part(page, 'message').isHidden(), 'no message shown');
+  const clock = await part(page, 'clock').textContent();
+  check(clock.startsWith('t = 0.00 s / 25.00 s'), `the time is shown ("${clock}")`);
+  const legend = await page.locator(`${PG} [data-id="legend"] li`).count();
+  check(legend >= 10, `the legend explains ${legend} marks`);
+
+  // --- Benchmark: predicted paths of the ten-robot example (printed, not asserted). ---
+  const bench = await page.evaluate(async ([name, runs, warmup]) => {
+    const { Playground } = await import('./pkg/dvf.js');
+    const pg = Playground.fromPreset(name);
+    const times = [];
+    const edits = [];
+    for (let k = 0; k < warmup + runs; k++) {
+      let t0 = performance.now();
+      pg.predict();
+      if (k >= warmup) times.push(performance.now() - t0);
+      t0 = performance.now();
+      pg.moveRobot(0, -60 + (k % 5) * 0.3, -40, 0);
+      if (k >= warmup) edits.push(performance.now() - t0);
+    }
+    const samples = pg.predictedSamples;
+    pg.free();
+    const median = (v) => v.sort((x, y) => x - y)[v.length >> 1];
+    return { predict: median(times), edit: median(edits), max: Math.max(...times), samples };
+  }, [BENCH_PRESET, BENCH_RUNS, WARMUP]);
+  console.log(`BENCH predicted paths of ${BENCH_PRESET} (10 robots, 25 s, dt 0.01): median ${bench.predict.toFixed(2)} ms, max ${bench.max.toFixed(2)} ms over ${BENCH_RUNS} runs; a whole drag edit (move + predict) ${bench.edit.toFixed(2)} ms; ${bench.samples} samples per robot`);
+  check(bench.samples >= 2, 'the benchmark predicted a path');
+
+  // --- Drag robot 1 at t = 0: its start moves and its predicted path bends. ---
+  const before = await scenarioOf(page);
+  const predictedBefore = await page.evaluate((sel) => Array.from(document.querySelector(sel).cache.predicted), PG);
+  const [sx, sy] = before.robots[0].start;
+  const from = await page.evaluate(([sel, x, y]) => document.querySelector(sel).worldToScreen(x, y), [PG, sx, sy]);
+  const scroll = await page.evaluate(() => [window.scrollX, window.scrollY]);
+  const fx = from.x - scroll[0];
+  const fy = from.y - scroll[1];
+  await page.mouse.move(fx, fy);
+  await page.mouse.down();
+  const frames0 = await page.evaluate((sel) => document.querySelector(sel).stats.frames, PG);
+  const t0 = Date.now();
+  const editTimes = [];
+  for (let k = 1; k <= DRAG_MOVES; k++) {
+    await page.mouse.move(fx + k * 1.5, fy - k * 1.2);
+    if (k % 10 === 0) editTimes.push(await page.evaluate((sel) => document.querySelector(sel).stats.lastEditMs, PG));
   }
-};
+  await frames(page);
+  const wall = (Date.now() - t0) / 1000;
+  const frames1 = await page.evaluate((sel) => document.querySelector(sel).stats.frames, PG);
+  await page.mouse.up();
+  await frames(page);
+  const fps = (frames1 - frames0) / wall;
+  const meanEdit = editTimes.reduce((s, v) => s + v, 0) / editTimes.length;
+  console.log(`BENCH drag of a robot in ${BENCH_PRESET}: ${(frames1 - frames0)} frames in ${wall.toFixed(2)} s = ${fps.toFixed(1)} frames/s while ${DRAG_MOVES} pointer moves arrived; edit + prediction per frame ${meanEdit.toFixed(2)} ms`);
+  await page.screenshot({ path: join(RESULTS, 'main-after-drag.png') });
+  const after = await scenarioOf(page);
+  const b = await canvasStats(page);
+  const predictedAfter = await page.evaluate((sel) => Array.from(document.querySelector(sel).cache.predicted), PG);
+  // The pointer went right and up on screen: right and up in the world (y up).
+  check(after.robots[0].start[0] > sx && after.robots[0].start[1] > sy,
+    `dragging robot 1 moves its start in scenario() (${before.robots[0].start.slice(0, 2).map((v) => v.toFixed(1))} → ${after.robots[0].start.slice(0, 2).map((v) => v.toFixed(1))})`);
+  check(JSON.stringify(after.robots.slice(1)) === JSON.stringify(before.robots.slice(1)), 'the other robots are unchanged');
+  const n = before.robots.length;
+  const samples = predictedBefore.length / n / 3;
+  const lastOf = (arr, i) => arr.slice((i * samples + samples - 10) * 3, (i * samples + samples - 10) * 3 + 2);
+  check(predictedAfter[0] !== predictedBefore[0] && JSON.stringify(lastOf(predictedAfter, 0)) !== JSON.stringify(lastOf(predictedBefore, 0)),
+    'robot 1\'s predicted path starts at the new place and runs differently');
+  const changed = changedFraction(a, b);
+  check(changed >= MIN_CHANGED_FRACTION, `the drag changes the picture (${(changed * 100).toFixed(2)} % of blocks)`);
+  const hash = await page.evaluate(() => location.hash);
+  check(hash.startsWith('#s='), `the address holds the edited scenario (${hash.length} characters)`);
 
-/** A free TCP port on 127.0.0.1. */
-function freePort() {
-  return new Promise((resolve, reject) => {
-    const srv = createServer();
-    srv.unref();
-    srv.on('error', reject);
-    srv.listen(0, '127.0.0.1', () => {
-      const { port } = srv.address();
-      srv.close(() => resolve(port));
-    });
-  });
-}
+  // --- Undo and redo. ---
+  await part(page, 'undo').click();
+  check(JSON.stringify((await scenarioOf(page)).robots[0]) === JSON.stringify(before.robots[0]), 'undo brings the start back');
+  await part(page, 'redo').click();
+  check(JSON.stringify((await scenarioOf(page)).robots[0]) === JSON.stringify(after.robots[0]), 'redo applies the drag again');
 
-/** Starts python3's http.server on www/ and resolves once it answers. */
-async function startServer(port) {
-  const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', WWW], {
-    stdio: ['ignore', 'ignore', 'pipe'],
-  });
-  let stderr = '';
-  server.stderr.on('data', (d) => { stderr += d; });
-  const deadline = Date.now() + SERVER_START_TIMEOUT_MS;
-  while (Date.now() < deadline) {
-    if (server.exitCode !== null) throw new Error(`http.server exited: ${stderr}`);
+  // --- The URL round trip: the copied address opens the same scene in a new page. ---
+  const url = await page.evaluate(() => location.href);
+  const copy = await newPage({ viewport: VIEWPORT });
+  await copy.goto(url);
+  await waitLoaded(copy);
+  await copy.waitForSelector('body[data-ready]');
+  const reopened = await scenarioOf(copy);
+  check(JSON.stringify(reopened) === JSON.stringify(await scenarioOf(page)), 'a copied link reopens exactly the same scenario');
+  checkQuiet(copy, 'reopened page');
+
+  // --- Bad fragments: a message, the default scene, no console error. ---
+  const defaultScenario = await page.evaluate((name) => import('./pkg/dvf.js').then((m) => m.presetScenario(name)), defaultName);
+  const badLinks = [
+    ['truncated JSON', `#s=${encodeURIComponent('{"robots":[{"start":[0,0,0]')}`, 'not valid JSON'],
+    ['bad percent-encoding', '#s=%E0%A4%A', 'percent-encoded'],
+    ['a negative radius', `#s=${encodeURIComponent('{"robots":[{"start":[0,0,0],"goal":[5,5,0]}],"obstacles":[{"center":[9,9],"radius":-1,"influence":2}]}')}`, 'obstacles[0].radius'],
+    ['an oversized fragment', `#s=${'x'.repeat(70 * 1024)}`, 'at most'],
+    ['an unknown preset', '#no-such-preset', 'no preset named'],
+  ];
+  for (const [what, fragment, expected] of badLinks) {
+    const bad = await newPage({ viewport: VIEWPORT });
+    await bad.goto(`${base}/${fragment}`);
+    await waitLoaded(bad);
+    await bad.waitForSelector('body[data-ready]');
+    const message = await part(bad, 'message').textContent();
+    const shown = await scenarioOf(bad);
+    check(message.includes(expected) && JSON.stringify(shown) === JSON.stringify(defaultScenario),
+      `a link with ${what} shows "${message.slice(0, 90)}…" and the default scene`);
+    if (what === 'truncated JSON') await bad.screenshot({ path: join(RESULTS, 'main-bad-link.png') });
+    await bad.context().close();
+  }
+
+  // --- A scenario name is text, never HTML. ---
+  const hostile = '<img src=x onerror="window.pwned=1">Robots & <b>bold</b>';
+  const xss = await newPage({ viewport: VIEWPORT });
+  await xss.goto(`${base}/#s=${encodeURIComponent(JSON.stringify({ name: hostile, robots: [{ start: [0, 0, 0], goal: [10, 5, 1] }] }))}`);
+  await waitLoaded(xss);
+  await xss.waitForSelector('body[data-ready]');
+  const title = await part(xss, 'title').textContent();
+  const imgs = await xss.evaluate((sel) => document.querySelector(sel).shadowRoot.querySelectorAll('img, b').length, PG);
+  check(title === hostile && imgs === 0 && !(await xss.evaluate(() => window.pwned)), 'a scenario name from a link is shown as text');
+  checkQuiet(xss, 'page with a hostile name');
+  await xss.context().close();
+
+  // --- Presets: the menu switches the scene; every preset draws. ---
+  await part(page, 'preset').selectOption(SECOND_PRESET);
+  await frames(page);
+  const c = await canvasStats(page);
+  check((await scenarioOf(page)).name.includes('antipodal'), `the preset menu loads ${SECOND_PRESET}`);
+  check(changedFraction(b, c) > 0.01, `switching preset changes the picture (${(changedFraction(b, c) * 100).toFixed(1)} % of blocks)`);
+  const names = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.presets().map((p) => p.name)));
+  for (const preset of names) {
+    await part(page, 'preset').selectOption(preset);
+    await frames(page);
+    await page.screenshot({ path: join(RESULTS, `preset-${preset}.png`) });
+    const s = await canvasStats(page);
+    check(s.coloured >= MIN_COLOURED_PIXELS && (await part(page, 'message').isHidden()), `preset ${preset} draws without a message (${s.coloured} coloured pixels)`);
+  }
+
+  // --- Parameters: a bad value shows the core's message and keeps the old one. ---
+  const kv = page.locator(`${PG} input[name="k_v"]`);
+  await kv.fill('-1');
+  await kv.press('Enter');
+  await kv.blur();
+  const paramError = await page.locator(`${PG} .param-error`).textContent();
+  check(paramError.startsWith('params.k_v: must be positive') && (await scenarioOf(page)).params.k_v === 1 && (await kv.inputValue()) === '1',
+    `k_v = -1 is refused with "${paramError}" and the field goes back to 1`);
+  await kv.fill('1.5');
+  await kv.press('Enter');
+  check((await scenarioOf(page)).params.k_v === 1.5 && (await page.locator(`${PG} .param-error`).isHidden()), 'k_v = 1.5 applies');
+  const vmax = page.locator(`${PG} input[name="v_max"]`);
+  await vmax.fill('3');
+  await vmax.press('Enter');
+  check((await scenarioOf(page)).params.v_max === 3, 'the speed saturation v_max can be set');
+  await vmax.fill('');
+  await vmax.press('Enter');
+  check((await scenarioOf(page)).params.v_max === null, 'an empty v_max removes the saturation');
+
+  // --- Keyboard: the canvas takes focus and plays, steps and resets from keys. ---
+  await part(page, 'preset').selectOption(SECOND_PRESET);
+  await part(page, 'canvas').focus();
+  await page.keyboard.press('s');
+  const afterStep = await page.evaluate((sel) => document.querySelector(sel).cache.time, PG);
+  await page.keyboard.press(' ');
+  await page.waitForFunction((sel) => document.querySelector(sel).cache.time > 1, PG);
+  await page.keyboard.press(' ');
+  await frames(page);
+  await page.screenshot({ path: join(RESULTS, 'main-playing.png') });
+  const playedTo = await page.evaluate((sel) => document.querySelector(sel).cache.time, PG);
+  await page.keyboard.press('r');
+  const resetTo = await page.evaluate((sel) => document.querySelector(sel).cache.time, PG);
+  check(afterStep > 0 && playedTo > 1 && resetTo === 0, `keys S, Space and R step (t = ${afterStep}), play (t = ${playedTo.toFixed(2)}) and reset`);
+  const presetStart = (await page.evaluate((n) => import('./pkg/dvf.js').then((m) => m.presetScenario(n)), SECOND_PRESET)).robots[0].start;
+  await page.keyboard.press(']');
+  await page.keyboard.press('ArrowUp');
+  const moved = await scenarioOf(page);
+  check(moved.robots[0].start[1] > presetStart[1] && moved.robots[0].start[0] === presetStart[0],
+    `] selects robot 1 and ArrowUp moves its start up (${presetStart[1].toFixed(2)} → ${moved.robots[0].start[1].toFixed(2)})`);
+  await page.keyboard.press('a');
+  check((await scenarioOf(page)).robots.length === moved.robots.length + 1, 'key A adds a robot');
+  await page.keyboard.press('Delete');
+  check((await scenarioOf(page)).robots.length === moved.robots.length, 'Delete removes the selected robot');
+  const focusOutline = await part(page, 'canvas').evaluate((el) => getComputedStyle(el).outlineStyle);
+  check(focusOutline !== 'none', `the focused canvas shows a focus outline (${focusOutline})`);
+
+  // --- Exports: scenario JSON, trajectories CSV, canvas PNG. ---
+  await part(page, 'preset').selectOption(BENCH_PRESET);
+  const current = await scenarioOf(page);
+  const [jsonDownload] = await Promise.all([page.waitForEvent('download'), part(page, 'export-json').click()]);
+  const jsonText = readFileSync(await jsonDownload.path(), 'utf8');
+  const checked = await page.evaluate((text) => import('./pkg/dvf.js').then((m) => {
     try {
-      const res = await fetch(`http://127.0.0.1:${port}/index.html`);
-      if (res.ok) return server;
-    } catch {
-      // not listening yet
+      return { ok: true, s: m.checkScenario(text) };
+    } catch (e) {
+      return { ok: false, error: e.message };
     }
-    await new Promise((r) => setTimeout(r, 100));
-  }
-  server.kill();
-  throw new Error(`http.server did not answer within ${SERVER_START_TIMEOUT_MS} ms`);
-}
+  }), jsonText);
+  check(checked.ok && JSON.stringify(checked.s) === JSON.stringify(current),
+    `the exported JSON (${jsonDownload.suggestedFilename()}) passes the crate's checks and is the scenario shown`);
+  const [csvDownload] = await Promise.all([page.waitForEvent('download'), part(page, 'export-csv').click()]);
+  const csv = readFileSync(await csvDownload.path(), 'utf8').trim().split('\n');
+  const expectedRows = await page.evaluate((s) => import('./pkg/dvf.js').then((m) => {
+    const r = new m.Run(s);
+    const rows = r.robotCount * r.sampleCount;
+    r.free();
+    return rows;
+  }), current);
+  const cols = csv.slice(1).every((line) => line.split(',').length === 7 && line.split(',').every((v) => Number.isFinite(Number(v))));
+  check(csv[0] === 'robot,t,x,y,theta,v,omega' && csv.length - 1 === expectedRows && cols,
+    `the CSV has the header and ${csv.length - 1} rows of 7 numbers (expected ${expectedRows})`);
+  const [pngDownload] = await Promise.all([page.waitForEvent('download'), part(page, 'export-png').click()]);
+  const png = readFileSync(await pngDownload.path());
+  const signature = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a].every((v, i) => png[i] === v);
+  const pngWidth = png.readUInt32BE(16);
+  check(signature && pngWidth === a.width, `the PNG has the PNG signature and the canvas' ${pngWidth} device pixels of width (${png.length} bytes)`);
 
-/** Pixel statistics of the main canvas, computed in the page on its backing store. */
-function canvasStats(page) {
-  return page.evaluate((spread) => {
-    const c = document.getElementById('view');
-    // Read through a copy, so the page's own context never reads back (Chromium warns when a
-    // context without willReadFrequently is read repeatedly).
-    const copy = document.createElement('canvas');
-    copy.width = c.width;
-    copy.height = c.height;
-    const cc = copy.getContext('2d', { willReadFrequently: true });
-    cc.drawImage(c, 0, 0);
-    const { data } = cc.getImageData(0, 0, c.width, c.height);
-    let coloured = 0;
-    const bg = [data[0], data[1], data[2]];
-    let nonBackground = 0;
-    // Down-sampled copy for comparing two pictures: the mean of each 8×8 block's red+green+blue.
-    const block = 8;
-    const bw = Math.ceil(c.width / block);
-    const bh = Math.ceil(c.height / block);
-    const blocks = new Array(bw * bh).fill(0);
-    for (let i = 0; i < data.length; i += 4) {
-      const r = data[i], g = data[i + 1], b = data[i + 2];
-      if (Math.max(r, g, b) - Math.min(r, g, b) > spread) coloured++;
-      if (r !== bg[0] || g !== bg[1] || b !== bg[2]) nonBackground++;
-      const p = i / 4;
-      blocks[Math.floor(p / c.width / block) * bw + Math.floor((p % c.width) / block)] += r + g + b;
-    }
-    return {
-      width: c.width,
-      height: c.height,
-      cssWidth: c.getBoundingClientRect().width,
-      dpr: window.devicePixelRatio,
-      coloured,
-      nonBackground,
-      blocks,
-    };
-  }, COLOURED_SPREAD);
-}
+  // --- Import: a bad file shows a message and keeps the scene; a good one loads. ---
+  const shownBefore = await scenarioOf(page);
+  await part(page, 'import-file').setInputFiles({ name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from('{"robots": [{"start": [0, 0, 0], "goal": [1, 2]}]}') });
+  await page.waitForFunction((sel) => !document.querySelector(sel).shadowRoot.querySelector('[data-id="message"]').hidden, PG);
+  const importMessage = await part(page, 'message').textContent();
+  check(importMessage.includes('robots[0].goal') && JSON.stringify(await scenarioOf(page)) === JSON.stringify(shownBefore),
+    `a bad import shows "${importMessage}" and keeps the scene`);
+  await part(page, 'import-file').setInputFiles({ name: 'two.json', mimeType: 'application/json', buffer: Buffer.from(readFileSync(join(ROOT, 'www', 'scenarios', 'two-robot-swap.json'))) });
+  await page.waitForFunction((sel) => document.querySelector(sel).scenario().robots.length === 2, PG);
+  check((await part(page, 'message').isHidden()), 'a good import loads the file and clears the message');
 
-async function main() {
-  const wasm = join(WWW, 'pkg', 'dvf_bg.wasm');
-  if (!existsSync(wasm)) throw new Error(`${wasm} is missing: run make build-wasm first`);
-  mkdirSync(RESULTS, { recursive: true });
+  checkQuiet(page, 'main page');
 
-  const port = await freePort();
-  const server = await startServer(port);
-  let browser;
-  try {
-    browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
-    const context = await browser.newContext({ viewport: VIEWPORT, deviceScaleFactor: DEVICE_SCALE_FACTOR });
-    const page = await context.newPage();
-    page.setDefaultTimeout(PAGE_TIMEOUT_MS);
-    const messages = [];
-    page.on('console', (m) => {
-      if (m.type() === 'error' || m.type() === 'warning') messages.push(`console.${m.type()}: ${m.text()}`);
-    });
-    page.on('pageerror', (e) => messages.push(`page error: ${e.message}`));
-    page.on('requestfailed', (r) => messages.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
-    page.on('response', (r) => {
-      if (r.status() >= 400) messages.push(`HTTP ${r.status()}: ${r.url()}`);
-    });
-
-    await page.goto(`http://127.0.0.1:${port}/`);
-    await page.waitForSelector('body[data-preset]');
-    const first = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.defaultPreset()));
-    const shown = await page.getAttribute('body', 'data-preset');
-    check(shown === first, `the page opens on the default preset (${shown})`);
-    // Two animation frames: the draw requested on load has happened.
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-    await page.screenshot({ path: join(RESULTS, 'default-preset.png') });
-
-    const a = await canvasStats(page);
-    check(a.dpr === DEVICE_SCALE_FACTOR && Math.abs(a.width - a.cssWidth * a.dpr) <= 1,
-      `canvas backing store follows devicePixelRatio (${a.width} px for ${a.cssWidth} CSS px at ${a.dpr}×)`);
-    check(a.coloured >= MIN_COLOURED_PIXELS, `default preset ${first} draws trails (${a.coloured} coloured pixels)`);
-    check(a.nonBackground > a.width * a.height * 0.05, `canvas is not blank (${a.nonBackground} non-background pixels)`);
-    const name = await page.textContent('#scenario-name');
-    check(name.length > 0, `scenario name shown: "${name}"`);
-    const rows = await page.locator('#robots tr').count();
-    check(rows > 0, `report lists ${rows} robots`);
-    check(await page.isHidden('#error'), 'no error banner');
-
-    // Scrub to the start: robots move to their start poses, the picture changes.
-    await page.locator('#time').fill('0');
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-    const label = await page.textContent('#time-label');
-    check(label.startsWith('t = 0.00 s'), `time slider scrubs to the start ("${label}")`);
-    await page.screenshot({ path: join(RESULTS, 'default-preset-t0.png') });
-
-    await page.selectOption('#preset', SECOND_PRESET);
-    await page.waitForSelector(`body[data-preset="${SECOND_PRESET}"]`);
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-    await page.screenshot({ path: join(RESULTS, 'second-preset.png') });
-    const b = await canvasStats(page);
-    const changed = a.blocks.filter((v, i) => Math.abs(v - b.blocks[i]) > 8 * 8 * 3 * 4).length / a.blocks.length;
-    check(b.coloured >= MIN_COLOURED_PIXELS, `${SECOND_PRESET} draws trails (${b.coloured} coloured pixels)`);
-    check(changed >= MIN_CHANGED_FRACTION, `switching preset changes the picture (${(changed * 100).toFixed(1)} % of blocks)`);
-
-    // Every preset runs and draws; one screenshot each, for looking at.
-    const names = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.presets().map((p) => p.name)));
-    for (const preset of names) {
-      await page.selectOption('#preset', preset);
-      await page.waitForSelector(`body[data-preset="${preset}"]`);
-      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-      await page.screenshot({ path: join(RESULTS, `preset-${preset}.png`) });
-      const s = await canvasStats(page);
-      check(s.coloured >= MIN_COLOURED_PIXELS && (await page.isHidden('#error')),
-        `preset ${preset} draws without error (${s.coloured} coloured pixels)`);
-    }
-
-    check(messages.length === 0, `no console errors or warnings, no page errors${messages.length ? `:\n  ${messages.join('\n  ')}` : ''}`);
-  } finally {
-    if (browser) await browser.close();
-    server.kill();
-  }
-}
-
-main()
-  .catch((e) => {
-    failures.push(e.stack ?? String(e));
-    console.log(`FAIL ${e.stack ?? e}`);
-  })
-  .finally(() => {
-    if (failures.length) {
-      console.log(`\n${failures.length} failure(s)`);
-      process.exitCode = 1;
-    } else {
-      console.log('\nall checks passed');
-    }
-  });
+  // --- The README's picture: 1280×800 at scale 1, Example 4 part-way, curves of the field. ---
+  const shot = await newPage({ viewport: VIEWPORT, deviceScaleFactor: 1 });
+  await shot.goto(`${base}/`);
+  await waitLoaded(shot);
+  await shot.evaluate((sel) => document.querySelector(sel).step(900), PG);
+  await frames(shot);
+  await shot.screenshot({ path: join(ROOT, 'docs', 'playground.png') });
+  await shot.screenshot({ path: join(RESULTS, 'readme-playground.png') });
+  checkQuiet(shot, 'README screenshot page');
+});
