@@ -140,8 +140,11 @@ export class DvfPlayground extends HTMLElement {
     this.frameRequested = false;
     this.curvesKey = '';
     this.curves = null;
-    /** Diagnostics read by the end-to-end tests: frames drawn, last prediction time (ms). */
-    this.stats = { frames: 0, lastEditMs: 0 };
+    /**
+     * Diagnostics read by the end-to-end tests: frames drawn, the time of the last edit with
+     * its prediction, and the work of the last and the slowest frame (ms).
+     */
+    this.stats = { frames: 0, lastEditMs: 0, frameWorkMs: 0, maxFrameWorkMs: 0 };
     let resolveLoaded;
     /** Resolves once the first scene is shown. */
     this.loaded = new Promise((r) => { resolveLoaded = r; });
@@ -473,6 +476,7 @@ export class DvfPlayground extends HTMLElement {
   frame(nowMs) {
     this.frameRequested = false;
     if (!this.pg) return;
+    const workStart = performance.now();
     if (this.pendingPointer) {
       const p = this.pendingPointer;
       this.pendingPointer = null;
@@ -495,6 +499,8 @@ export class DvfPlayground extends HTMLElement {
     }
     this.draw();
     this.stats.frames += 1;
+    this.stats.frameWorkMs = performance.now() - workStart;
+    this.stats.maxFrameWorkMs = Math.max(this.stats.maxFrameWorkMs, this.stats.frameWorkMs);
     if (this.playing) this.requestDraw();
   }
 

@@ -54,6 +54,7 @@ await run(async ({ base, newPage }) => {
     el.addEventListener('change', () => { window.changes += 1; });
   }, SWAP);
   const robot = swap.robots[0].start;
+  await page.locator(SWAP).scrollIntoViewIfNeeded();
   const at = await page.evaluate(([sel, x, y]) => document.querySelector(sel).worldToScreen(x, y), [SWAP, robot[0], robot[1]]);
   const scroll = await page.evaluate(() => [window.scrollX, window.scrollY]);
   const before = await canvasStats(page, SWAP);
