@@ -261,7 +261,7 @@ fn playground_rejects_bad_input_with_the_field_named() {
         ),
     ];
     for (result, expected) in cases {
-        let m = message(result.err().expect(&expected));
+        let m = message(result.expect_err(&expected));
         assert!(m.starts_with(&expected), "{m} (expected {expected})");
     }
     // Nothing was changed by the refused calls.
