@@ -95,7 +95,7 @@ const TEMPLATE = `
     </div>
     <aside class="side full">
       <section>
-        <h3>Selected robot</h3>
+        <h3>Inspected robot</h3>
         <p class="robot-info" data-id="robot-info"></p>
         <canvas data-id="plots" aria-label="Minimum pair distance and the selected robot's errors over time"></canvas>
       </section>

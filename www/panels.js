@@ -50,7 +50,7 @@ export function buildLegend(list) {
     ['safe radius r_ij', (c, x, y) => drawSafeDisc(c, x, y, 9, n)],
     ['virtual obstacle, R_c', (c, x, y) => drawVirtualObstacle(c, x, y, 9)],
     ['sensing radius R_s', (c, x, y) => drawSenseCircle(c, x, y, 10)],
-    ['field Γ of the selected robot', drawArrowGlyph],
+    ['field Γ of the inspected robot', drawArrowGlyph],
     ['integral curve from θ(0)', drawCurveGlyph],
     ['handle: drag to turn / resize', (c, x, y) => drawHandle(c, x, y)],
   ];

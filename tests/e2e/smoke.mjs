@@ -9,7 +9,7 @@
 //
 // Run: make test-e2e   (or: node tests/e2e/smoke.mjs after make build-wasm)
 
-import { readFileSync } from 'node:fs';
+import { readFileSync, statSync } from 'node:fs';
 import {
   RESULTS, ROOT, canvasStats, changedFraction, check, checkQuiet, frames, join, run, scenarioOf,
   waitLoaded,
@@ -30,11 +30,16 @@ const MIN_COLOURED_PIXELS = 2_000;
 /** A real change of the picture touches at least this fraction of 8×8 blocks. */
 const MIN_CHANGED_FRACTION = 0.002;
 const PG = 'dvf-playground';
+/** The wasm package's budget before compression (bytes). */
+const MAX_WASM_BYTES = 250_000;
 
 /** A locator inside the playground's shadow root (Playwright's CSS pierces open shadow roots). */
 const part = (page, id) => page.locator(`${PG} [data-id="${id}"]`);
 
 await run(async ({ base, newPage }) => {
+  const wasmBytes = statSync(join(ROOT, 'www', 'pkg', 'dvf_bg.wasm')).size;
+  console.log(`SIZE www/pkg/dvf_bg.wasm: ${wasmBytes} bytes`);
+  check(wasmBytes <= MAX_WASM_BYTES, `the release wasm package is at most ${MAX_WASM_BYTES} bytes (${wasmBytes})`);
   const page = await newPage({ viewport: VIEWPORT, deviceScaleFactor: DEVICE_SCALE_FACTOR });
   await page.goto(`${base}/`);
   await waitLoaded(page);
@@ -285,11 +290,16 @@ await run(async ({ base, newPage }) => {
 
   checkQuiet(page, 'main page');
 
-  // --- The README's picture: 1280×800 at scale 1, Example 4 part-way, curves of the field. ---
+  // --- The README's picture: 1280×800 at scale 1, Example 4 as the robots pass the obstacle,
+  // the field of the robot that goes round it. ---
   const shot = await newPage({ viewport: VIEWPORT, deviceScaleFactor: 1 });
   await shot.goto(`${base}/`);
   await waitLoaded(shot);
-  await shot.evaluate((sel) => document.querySelector(sel).step(900), PG);
+  await shot.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    el.step(70);
+    el.focusRobot = 2;
+  }, PG);
   await frames(shot);
   await shot.screenshot({ path: join(ROOT, 'docs', 'playground.png') });
   await shot.screenshot({ path: join(RESULTS, 'readme-playground.png') });
