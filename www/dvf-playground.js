@@ -576,7 +576,7 @@ export class DvfPlayground extends HTMLElement {
       { points: series.futurePair, colour: PAIR_COLOUR, axis: 'left', dashed: true },
     ];
     drawPlot(ctx, { x: 0, y: 0, w: width, h: half - 4 }, {
-      title: pairLines.length ? 'min distance between two robots (m)' : 'min distance: no interacting pair',
+      title: 'min distance between two robots (m)',
       duration: scene.duration,
       time: scene.time,
       lines: pairLines,
@@ -741,8 +741,12 @@ export class DvfPlayground extends HTMLElement {
       const o = s.obstacles[sel.index];
       const x = view.sx(o.center[0]);
       const y = view.sy(o.center[1]);
-      if (near(x + o.radius * view.scale, y, HANDLE_RADIUS_PX + 4)) return { kind: 'obstacle-radius', index: sel.index };
-      if (near(x + o.influence * view.scale, y, HANDLE_RADIUS_PX + 4)) return { kind: 'obstacle-influence', index: sel.index };
+      // The nearer of the two handles: on a small obstacle they can lie within reach of both.
+      const dr = Math.hypot(px - (x + o.radius * view.scale), py - y);
+      const di = Math.hypot(px - (x + o.influence * view.scale), py - y);
+      if (Math.min(dr, di) <= HANDLE_RADIUS_PX + 4) {
+        return { kind: dr < di ? 'obstacle-radius' : 'obstacle-influence', index: sel.index };
+      }
     }
     let best = null;
     const consider = (cand, d) => { if (d <= HIT_PX && (!best || d < best.d)) best = { ...cand, d }; };

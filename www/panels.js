@@ -82,7 +82,7 @@ export function buildParams(form, onChange) {
     input.step = 'any';
     input.name = key;
     input.setAttribute('aria-label', `${label} (${unit}): ${title}`);
-    if (optional) input.placeholder = 'none';
+    if (optional) input.placeholder = 'off';
     row.append(name, input, el('span', unit, 'param-unit'));
     form.append(row);
     inputs.set(key, input);

@@ -116,6 +116,11 @@ export function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLa
   ctx.textAlign = 'left';
   ctx.fillText('0', px0, py1 + 2);
 
+  if (lines.length === 0) {
+    ctx.textAlign = 'center';
+    ctx.textBaseline = 'middle';
+    ctx.fillText('no pair of interacting robots', (px0 + px1) / 2, (py0 + py1) / 2);
+  }
   if (hline) {
     const hy = Math.round(sy(hline.value, 'left')) + 0.5;
     ctx.beginPath();

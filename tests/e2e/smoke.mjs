@@ -141,6 +141,56 @@ await run(async ({ base, newPage }) => {
   await part(page, 'redo').click();
   check(JSON.stringify((await scenarioOf(page)).robots[0]) === JSON.stringify(after.robots[0]), 'redo applies the drag again');
 
+  // --- Handles: a selected robot's heading handle turns it; an obstacle's handles resize it. ---
+  const screenOf = (x, y) => page.evaluate(([sel, wx, wy]) => {
+    const p = document.querySelector(sel).worldToScreen(wx, wy);
+    return [p.x - window.scrollX, p.y - window.scrollY];
+  }, [PG, x, y]);
+  const dragFromTo = async ([x0, y0], [x1, y1]) => {
+    await page.mouse.move(x0, y0);
+    await page.mouse.down();
+    for (let k = 1; k <= 8; k++) await page.mouse.move(x0 + ((x1 - x0) * k) / 8, y0 + ((y1 - y0) * k) / 8);
+    await page.mouse.up();
+    await frames(page);
+  };
+  const r2 = (await scenarioOf(page)).robots[1].start;
+  const [bx, by] = await screenOf(r2[0], r2[1]);
+  await page.mouse.click(bx, by);
+  await frames(page);
+  await page.screenshot({ path: join(RESULTS, 'main-robot-selected.png') });
+  // The handle sits 30 CSS px ahead of the robot (heading 0: to the right); drag it upwards.
+  await dragFromTo([bx + 30, by], [bx, by - 40]);
+  const turned = (await scenarioOf(page)).robots[1].start[2];
+  check(Math.abs(turned - Math.PI / 2) < 0.2, `the heading handle turns robot 2 to ${turned.toFixed(2)} rad (≈ π/2)`);
+  const ob = (await scenarioOf(page)).obstacles[0];
+  const [ox, oy] = await screenOf(ob.center[0], ob.center[1]);
+  await page.mouse.click(ox, oy);
+  await frames(page);
+  const [ex] = await screenOf(ob.center[0] + ob.radius, ob.center[1]);
+  await dragFromTo([ex, oy], [ex + 15, oy]);
+  const [ix] = await screenOf(ob.center[0] + ob.influence, ob.center[1]);
+  await dragFromTo([ix, oy], [ix + 30, oy]);
+  const resized = (await scenarioOf(page)).obstacles[0];
+  check(resized.radius > ob.radius + 1 && resized.influence > ob.influence + 2 && resized.center[0] === ob.center[0],
+    `the obstacle's handles resize r_o ${ob.radius} → ${resized.radius.toFixed(2)} and R_o ${ob.influence} → ${resized.influence.toFixed(2)}`);
+  await page.screenshot({ path: join(RESULTS, 'main-obstacle-resized.png') });
+
+  // --- Pan and zoom: the wheel zooms about the pointer, dragging the background pans. ---
+  const camera0 = await page.evaluate((sel) => ({ ...document.querySelector(sel).camera }), PG);
+  const [cx, cy] = await screenOf(-120, -70);
+  await page.mouse.move(cx, cy);
+  await page.mouse.wheel(0, -300);
+  await frames(page);
+  const camera1 = await page.evaluate((sel) => ({ ...document.querySelector(sel).camera }), PG);
+  await dragFromTo([cx, cy], [cx + 80, cy]);
+  const camera2 = await page.evaluate((sel) => ({ ...document.querySelector(sel).camera }), PG);
+  check(camera1.scale > camera0.scale && camera2.cx < camera1.cx && JSON.stringify(await scenarioOf(page)).length > 0,
+    `the wheel zooms (${camera0.scale.toFixed(2)} → ${camera1.scale.toFixed(2)} px/m) and dragging the background pans`);
+  await page.screenshot({ path: join(RESULTS, 'main-zoomed.png') });
+  await page.keyboard.press('f');
+  for (let k = 0; k < 3; k++) await part(page, 'undo').click();
+  check(JSON.stringify(await scenarioOf(page)) === JSON.stringify(after), 'three undos take back the resizes and the turn');
+
   // --- The URL round trip: the copied address opens the same scene in a new page. ---
   const url = await page.evaluate(() => location.href);
   const copy = await newPage({ viewport: VIEWPORT });
