@@ -24,11 +24,14 @@ import { MAX_SCENARIO_BYTES, download, fileStem, readScenarioFile, trajectoriesC
 /** The module is fetched and compiled once per page, whatever the number of instances. */
 const WASM_READY = init().then(() => ({ limits: playgroundLimits(), presets: presets() }));
 
+const NO_TRAILS = new Float64Array(0);
 /** Playback speeds offered (simulated seconds per wall-clock second). */
 const SPEEDS = [0.25, 0.5, 1, 2, 4];
 const DEFAULT_SPEED = 1;
 /** A frame never advances more than this wall time (s): a hidden tab does not jump ahead. */
 const MAX_FRAME_WALL_S = 0.1;
+/** The Step button and the S key advance this much simulated time (s). */
+const STEP_TIME_S = 0.1;
 /** Hit radius around robots, goals and handles (CSS px). */
 const HIT_PX = 12;
 /** Keyboard: arrows move the selection by this fraction of the view's smaller side. */
@@ -57,7 +60,7 @@ const TEMPLATE = `
     </span>
     <span class="group">
       <button type="button" data-id="play" aria-pressed="false" title="Play / pause (Space)">Play</button>
-      <button type="button" data-id="step" title="One step of dt (S)">Step</button>
+      <button type="button" data-id="step" title="Advance 0.1 s (S)">Step</button>
       <button type="button" data-id="reset" title="Back to t = 0 at the starts (R)">Reset</button>
       <label class="full">Speed <select data-id="speed" aria-label="Playback speed"></select></label>
     </span>
@@ -137,6 +140,9 @@ export class DvfPlayground extends HTMLElement {
     this.redoStack = [];
     this.drag = null;
     this.pendingPointer = null;
+    /** Pointers down on the canvas (id → canvas point), for two-finger pinch zoom. */
+    this.pointers = new Map();
+    this.pinch = null;
     this.frameRequested = false;
     this.curvesKey = '';
     this.curves = null;
@@ -283,6 +289,11 @@ export class DvfPlayground extends HTMLElement {
     box.hidden = !text;
   }
 
+  /** Advances STEP_TIME_S of simulated time (at least one step). */
+  stepTime() {
+    if (this.pg) this.step(Math.max(1, Math.round(STEP_TIME_S / this.pg.dt)));
+  }
+
   // ---- documents and edits ----------------------------------------------------------------
 
   /** Loads preset `name` as an edit (undoable); returns whether it worked. */
@@ -412,7 +423,9 @@ export class DvfPlayground extends HTMLElement {
       duration: pg.duration,
       poses: pg.poses(),
       status: pg.status(),
-      trails: pg.trails(),
+      // At t = 0 a trail is the start alone (nothing to draw): skip copying the rings, which
+      // keeps a drag at t = 0 free of large allocations.
+      trails: pg.historyLength > 1 ? pg.trails() : NO_TRAILS,
       trailHead: pg.trailHead,
       trailLens: Array.from({ length: pg.robotCount }, (_, i) => pg.trailLength(i)),
       trailTimes: pg.trailTimes(),
@@ -630,7 +643,7 @@ export class DvfPlayground extends HTMLElement {
     speed.addEventListener('change', () => { this.speed = Number(speed.value); });
     $('preset').addEventListener('change', () => this.loadPreset($('preset').value, { edit: true }));
     $('play').addEventListener('click', () => (this.playing ? this.pause() : this.play()));
-    $('step').addEventListener('click', () => this.step(1));
+    $('step').addEventListener('click', () => this.stepTime());
     $('reset').addEventListener('click', () => this.reset());
     $('undo').addEventListener('click', () => this.undo());
     $('redo').addEventListener('click', () => this.redo());
@@ -688,6 +701,10 @@ export class DvfPlayground extends HTMLElement {
     c.addEventListener('pointerup', (e) => this.pointerUp(e));
     c.addEventListener('pointercancel', (e) => this.pointerUp(e));
     c.addEventListener('wheel', (e) => {
+      // Embedded in text, the wheel scrolls the page unless the canvas has been clicked
+      // (focused) or Ctrl is held; with the full controls it always zooms.
+      const mine = this.hasAttribute('controls') || e.ctrlKey || this.shadowRoot.activeElement === c;
+      if (!mine) return;
       e.preventDefault();
       const r = c.getBoundingClientRect();
       this.zoom(e.deltaY < 0 ? ZOOM_STEP : 1 / ZOOM_STEP, e.clientX - r.left, e.clientY - r.top);
@@ -768,6 +785,16 @@ export class DvfPlayground extends HTMLElement {
     if (!this.pg || e.button > 0) return;
     this.canvas.focus({ preventScroll: true });
     const { px, py } = this.local(e);
+    this.pointers.set(e.pointerId, { px, py });
+    if (this.pointers.size === 2) {
+      // A second finger: whatever the first started becomes a pinch (zoom and pan).
+      this.cancelDrag();
+      const [a, b] = [...this.pointers.values()];
+      this.view();
+      this.pinch = { distance: Math.hypot(a.px - b.px, a.py - b.py) || 1, camera: { ...this.camera }, mid: [(a.px + b.px) / 2, (a.py + b.py) / 2] };
+      return;
+    }
+    if (this.pointers.size > 2) return;
     const target = this.hit(px, py);
     if (target.kind === 'robot' || target.kind === 'goal' || target.kind === 'obstacle') {
       this.selection = { kind: target.kind, index: target.index };
@@ -793,6 +820,11 @@ export class DvfPlayground extends HTMLElement {
   }
 
   pointerMove(e) {
+    if (this.pointers.has(e.pointerId)) this.pointers.set(e.pointerId, this.local(e));
+    if (this.pinch && this.pointers.size === 2) {
+      this.applyPinch();
+      return;
+    }
     if (!this.drag || e.pointerId !== this.drag.pointerId) return;
     // Coalesced: the newest position is applied once per animation frame.
     this.pendingPointer = this.local(e);
@@ -800,6 +832,12 @@ export class DvfPlayground extends HTMLElement {
   }
 
   pointerUp(e) {
+    this.pointers.delete(e.pointerId);
+    if (this.pinch) {
+      if (this.pointers.size < 2) this.pinch = null;
+      if (this.canvas.hasPointerCapture(e.pointerId)) this.canvas.releasePointerCapture(e.pointerId);
+      return;
+    }
     if (!this.drag || e.pointerId !== this.drag.pointerId) return;
     if (this.pendingPointer) {
       this.applyDrag(this.pendingPointer);
@@ -812,6 +850,32 @@ export class DvfPlayground extends HTMLElement {
       if (this.scenarioText() !== d.before) this.pushUndo(d.before);
       this.emitChange(d.kind);
     }
+    this.requestDraw();
+  }
+
+  /** Ends a drag without keeping it: the scene goes back to where the drag began. */
+  cancelDrag() {
+    const d = this.drag;
+    if (!d) return;
+    this.drag = null;
+    this.pendingPointer = null;
+    if (d.moved && d.kind !== 'pan' && this.scenarioText() !== d.before) this.applyScenario(JSON.parse(d.before));
+  }
+
+  /** Two pointers: the camera scales with their distance about their midpoint, and follows it. */
+  applyPinch() {
+    const [a, b] = [...this.pointers.values()];
+    const p = this.pinch;
+    const scale = p.camera.scale * (Math.hypot(a.px - b.px, a.py - b.py) / p.distance);
+    const w = this.canvas.clientWidth;
+    const h = this.canvas.clientHeight;
+    // The world point under the first midpoint stays under the current midpoint.
+    const wx = p.camera.cx + (p.mid[0] - w / 2) / p.camera.scale;
+    const wy = p.camera.cy - (p.mid[1] - h / 2) / p.camera.scale;
+    const mx = (a.px + b.px) / 2;
+    const my = (a.py + b.py) / 2;
+    this.camera = { scale, cx: wx - (mx - w / 2) / scale, cy: wy + (my - h / 2) / scale };
+    this.userCamera = true;
     this.requestDraw();
   }
 
@@ -878,7 +942,7 @@ export class DvfPlayground extends HTMLElement {
     } else if (mod && key === 'y') this.redo();
     else if (mod) handled = false;
     else if (key === ' ') (this.playing ? this.pause() : this.play());
-    else if (key === 's' || key === 'S') this.step(1);
+    else if (key === 's' || key === 'S') this.stepTime();
     else if (key === 'r' || key === 'R') this.reset();
     else if (key === 'a' || key === 'A') this.addRobot();
     else if (key === 'o' || key === 'O') this.addObstacle();
