@@ -39,6 +39,11 @@ use glam::DVec2;
 
 /// At most this many robots in the playground: prediction costs `O(robots² · steps)` per edit.
 pub const MAX_LIVE_ROBOTS: usize = 100;
+/// At most this many steps (`duration / dt`) in a live scenario.
+pub const MAX_LIVE_STEPS: usize = 200_000;
+/// At most this much prediction work, `robots² · steps`: an edit (and a link someone shares)
+/// must not freeze the page. Example 4 (10 robots, 2,500 steps) needs 250,000.
+pub const MAX_LIVE_WORK: usize = 50_000_000;
 /// Samples kept per robot in the trail ring.
 pub const TRAIL_CAPACITY: usize = 2_048;
 /// At most this many samples per robot in a predicted path (the current state included).
@@ -49,8 +54,10 @@ pub const POSE_STRIDE: usize = 3;
 pub const STATUS_STRIDE: usize = 6;
 /// Values per field sample: `x, y, Γx, Γy`.
 pub const FIELD_STRIDE: usize = 4;
-/// The largest field grid side and number of integral curves per side.
+/// The largest field grid side.
 pub const MAX_GRID_SIDE: usize = 200;
+/// The largest number of integral curves per side (each is an RK4 run of its own).
+pub const MAX_CURVE_SIDE: usize = 40;
 /// Integration step of the integral curves (field time units) and their length.
 const CURVE_DT: f64 = 0.05;
 /// `θ̃` decays like `e^{−t}` along a curve: 8 time units leave `e^{−8} ≈ 3e-4` of it.
@@ -420,7 +427,7 @@ impl Live {
     /// [`CURVE_POINTS`] points each.
     ///
     /// # Errors
-    /// An index out of range, `n` outside `2..=MAX_GRID_SIDE`, bad bounds or a non-finite
+    /// An index out of range, `n` outside `2..=MAX_CURVE_SIDE`, bad bounds or a non-finite
     /// `theta0`.
     pub fn integral_curves(
         &mut self,
@@ -430,7 +437,12 @@ impl Live {
         n: usize,
     ) -> Result<&[f64], Error> {
         let goal = self.robot(index)?.goal;
-        grid_side("n", n)?;
+        if !(2..=MAX_CURVE_SIDE).contains(&n) {
+            return Err(Error::Invalid {
+                field: "n".into(),
+                message: format!("must be between 2 and {MAX_CURVE_SIDE}, not {n}"),
+            });
+        }
         check_bounds(bounds)?;
         if !theta0.is_finite() {
             return Err(Error::Invalid {
@@ -535,6 +547,26 @@ fn check(s: &Scenario) -> Result<(), Error> {
             message: format!(
                 "the playground simulates at most {MAX_LIVE_ROBOTS} robots live, not {} (the `dvf` command line takes more)",
                 s.robots.len()
+            ),
+        });
+    }
+    let steps = s.steps();
+    if steps > MAX_LIVE_STEPS {
+        return Err(Error::Invalid {
+            field: "duration".into(),
+            message: format!(
+                "the playground runs at most {MAX_LIVE_STEPS} steps live, not {steps} (duration / dt): shorten the duration or raise dt (the `dvf` command line runs longer scenarios)"
+            ),
+        });
+    }
+    let n = s.robots.len();
+    let work = n * n * steps;
+    if work > MAX_LIVE_WORK {
+        return Err(Error::Invalid {
+            field: "duration".into(),
+            message: format!(
+                "{n} robots over {steps} steps are too much to predict on every edit: robots² · steps must be at most {MAX_LIVE_WORK} (at most {} steps for {n} robots); shorten the duration, raise dt or use fewer robots",
+                MAX_LIVE_WORK / (n * n)
             ),
         });
     }
@@ -726,6 +758,29 @@ mod tests {
             .unwrap_err()
             .to_string()
             .starts_with("robots: the playground"));
+        let mut long = live.scenario().clone();
+        long.duration = 3_000.0;
+        long.dt = 0.01;
+        let e = Live::new(long).unwrap_err().to_string();
+        assert!(
+            e.starts_with("duration: the playground runs at most"),
+            "{e}"
+        );
+        let crowd = Scenario {
+            robots: (0..100)
+                .map(|k| RobotSpec {
+                    start: [k as f64 * 3.0, 0.0, 0.0],
+                    goal: [k as f64 * 3.0, 50.0, 0.0],
+                })
+                .collect(),
+            duration: 60.0,
+            ..live.scenario().clone()
+        };
+        let e = Live::new(crowd).unwrap_err().to_string();
+        assert!(
+            e.starts_with("duration: 100 robots over 6000 steps are too much"),
+            "{e}"
+        );
     }
 
     /// Editing a goal at t > 0 keeps the clock and the poses, adds a robot at its start, and

@@ -512,7 +512,7 @@ impl Playground {
         n: f64,
     ) -> Result<Float64Array, JsError> {
         let i = self.index(index)?;
-        let n = whole("n", n, live::MAX_GRID_SIDE)?;
+        let n = whole("n", n, live::MAX_CURVE_SIDE)?;
         let out = self
             .live
             .integral_curves(i, theta0, [xmin, ymin, xmax, ymax], n)
@@ -542,7 +542,8 @@ pub const STATUS_STRIDE: usize = live::STATUS_STRIDE;
 pub const FIELD_STRIDE: usize = live::FIELD_STRIDE;
 
 /// The playground's layout constants as an object, so that the page reads them rather than
-/// copying them: `{trailCapacity, predictionSamples, curvePoints, maxGridSide, maxRobots}`.
+/// copying them: `{trailCapacity, predictionSamples, curvePoints, maxGridSide, maxCurveSide,
+/// maxRobots}`.
 ///
 /// # Errors
 /// Only if the JS engine refuses to build the object.
@@ -555,6 +556,7 @@ pub fn playground_limits() -> Result<JsValue, JsError> {
         prediction_samples: usize,
         curve_points: usize,
         max_grid_side: usize,
+        max_curve_side: usize,
         max_robots: usize,
     }
     to_js(&Limits {
@@ -562,6 +564,7 @@ pub fn playground_limits() -> Result<JsValue, JsError> {
         prediction_samples: live::PREDICTION_SAMPLES,
         curve_points: live::CURVE_POINTS,
         max_grid_side: live::MAX_GRID_SIDE,
+        max_curve_side: live::MAX_CURVE_SIDE,
         max_robots: live::MAX_LIVE_ROBOTS,
     })
 }
