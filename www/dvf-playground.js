@@ -161,12 +161,18 @@ export class DvfPlayground extends HTMLElement {
   connectedCallback() {
     if (this.connected) return;
     this.connected = true;
-    this.wire();
     this.resizeObserver = new ResizeObserver(() => this.requestDraw());
     this.resizeObserver.observe(this.canvas);
     this.resizeObserver.observe(this.$('plots'));
     this.onWindowResize = () => this.requestDraw(); // devicePixelRatio changes come this way
     window.addEventListener('resize', this.onWindowResize);
+    // Moved elsewhere in the document: the same simulation goes on, wired once.
+    if (this.wired) {
+      this.requestDraw();
+      return;
+    }
+    this.wired = true;
+    this.wire();
     this.start();
   }
 
@@ -195,6 +201,11 @@ export class DvfPlayground extends HTMLElement {
       return;
     }
     const select = this.$('preset');
+    const custom = document.createElement('option');
+    custom.value = '';
+    custom.textContent = '(edited or imported)';
+    custom.disabled = true;
+    select.append(custom);
     for (const p of this.presetList) {
       const o = document.createElement('option');
       o.value = p.name;
