@@ -147,8 +147,9 @@ export class DvfPlayground extends HTMLElement {
     this.curvesKey = '';
     this.curves = null;
     /**
-     * Diagnostics read by the end-to-end tests: frames drawn, the time of the last edit with
-     * its prediction, and the work of the last and the slowest frame (ms).
+     * Diagnostics read by the end-to-end tests: frames drawn, when the first was (ms since the
+     * page's time origin), the time of the last edit with its prediction, and the work of the
+     * last and the slowest frame (ms).
      */
     this.stats = { frames: 0, lastEditMs: 0, frameWorkMs: 0, maxFrameWorkMs: 0 };
     let resolveLoaded;
@@ -522,6 +523,7 @@ export class DvfPlayground extends HTMLElement {
       }
     }
     this.draw();
+    if (this.stats.frames === 0) this.stats.firstFrameMs = performance.now();
     this.stats.frames += 1;
     this.stats.frameWorkMs = performance.now() - workStart;
     this.stats.maxFrameWorkMs = Math.max(this.stats.maxFrameWorkMs, this.stats.frameWorkMs);

@@ -48,6 +48,11 @@ await run(async ({ base, newPage }) => {
   check(await part(page, 'preset').inputValue() === defaultName, `the page opens on the default preset (${defaultName})`);
   await page.screenshot({ path: join(RESULTS, 'main-default.png') });
 
+  const firstFrame = await page.evaluate((sel) => {
+    const nav = performance.getEntriesByType('navigation')[0];
+    return { frame: document.querySelector(sel).stats.firstFrameMs, loaded: nav.domContentLoadedEventEnd };
+  }, PG);
+  console.log(`BENCH first frame ${firstFrame.frame.toFixed(0)} ms after navigation started (DOMContentLoaded at ${firstFrame.loaded.toFixed(0)} ms)`);
   const a = await canvasStats(page);
   check(a.dpr === DEVICE_SCALE_FACTOR && Math.abs(a.width - a.cssWidth * a.dpr) <= 1,
     `canvas backing store follows devicePixelRatio (${a.width} px for ${a.cssWidth} CSS px at ${a.dpr}×)`);
