@@ -281,4 +281,11 @@ fn playground_rejects_bad_input_with_the_field_named() {
         m.starts_with("robots: the playground simulates at most"),
         "{m}"
     );
+    // A scenario too long to predict on every edit is refused before it can freeze the page.
+    let long = r#"{"duration":3000,"dt":0.01,"robots":[{"start":[0,0,0],"goal":[1,2,3]}]}"#;
+    let m = message(Playground::new(long.into()).err().unwrap());
+    assert!(
+        m.starts_with("duration: the playground runs at most"),
+        "{m}"
+    );
 }

@@ -88,6 +88,20 @@ await run(async ({ base, newPage }) => {
   check(result.error.startsWith('dt:') && result.kept === 2 && result.now === 3,
     `load() rejects NaN with "${result.error}", keeps the scene, then loads three robots`);
   await page.waitForFunction((sel) => document.querySelector(sel).cache.time > 0.3, SWAP);
+  // Moved elsewhere in the page, an instance keeps its simulation and its single wiring.
+  const moved = await page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    el.pause();
+    const t = el.cache.time;
+    const home = el.parentElement;
+    document.body.append(el);
+    home.prepend(el);
+    window.changes = 0;
+    el.shadowRoot.querySelector('[data-id="add-robot"]').click();
+    return { t, after: el.cache.time, robots: el.scenario().robots.length, changes: window.changes };
+  }, SWAP);
+  check(moved.after === moved.t && moved.robots === 4 && moved.changes === 1,
+    `a moved instance keeps its time (${moved.t.toFixed(2)} s) and adds one robot per click with one change event`);
   await page.screenshot({ path: join(RESULTS, 'embed-after-api.png'), fullPage: true });
   checkQuiet(page, 'embed page');
 });
