@@ -257,6 +257,8 @@ impl Run {
 ///   [`trailTimes`](Playground::trail_times) and [`trailMinPair`](Playground::trail_min_pair)
 ///   `[TRAIL_CAPACITY]` are rings of the same slots (time in s, the smallest distance between
 ///   two robots, NaN for none), [`historyLength`](Playground::history_length) long.
+///   [`trailsPointer`](Playground::trails_pointer) gives the rings' address for a view
+///   into the module's memory instead of a copy.
 /// - [`predicted`](Playground::predicted) `[robots · samples · 3]`: `x, y, θ` from now to the
 ///   end, sample 0 now; [`predictedTimes`](Playground::predicted_times) and
 ///   [`predictedMinPair`](Playground::predicted_min_pair) `[samples]`.
@@ -401,6 +403,16 @@ impl Playground {
     #[must_use]
     pub fn trails(&self) -> Float64Array {
         Float64Array::from(self.live.trails())
+    }
+
+    /// Address of the trail rings in the module's memory, for reading them without a copy:
+    /// `new Float64Array(memory.buffer, trailsPointer, robots · TRAIL_CAPACITY · 3)`. The view
+    /// is valid until the next call into the module (a call may move or grow the memory):
+    /// make it just before reading.
+    #[wasm_bindgen(getter, js_name = trailsPointer)]
+    #[must_use]
+    pub fn trails_pointer(&self) -> usize {
+        self.live.trails().as_ptr() as usize
     }
 
     /// The ring slot written next.

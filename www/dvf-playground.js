@@ -22,7 +22,7 @@ import { buildLegend, buildParams, fillParams } from './panels.js';
 import { MAX_SCENARIO_BYTES, download, fileStem, readScenarioFile, trajectoriesCsv } from './io.js';
 
 /** The module is fetched and compiled once per page, whatever the number of instances. */
-const WASM_READY = init().then(() => ({ limits: playgroundLimits(), presets: presets() }));
+const WASM_READY = init().then((wasm) => ({ memory: wasm.memory, limits: playgroundLimits(), presets: presets() }));
 
 const NO_TRAILS = new Float64Array(0);
 /** Playback speeds offered (simulated seconds per wall-clock second). */
@@ -194,7 +194,8 @@ export class DvfPlayground extends HTMLElement {
 
   async start() {
     try {
-      const { limits, presets: list } = await WASM_READY;
+      const { memory, limits, presets: list } = await WASM_READY;
+      this.memory = memory;
       this.limits = limits;
       this.presetList = list;
     } catch (e) {
@@ -435,9 +436,8 @@ export class DvfPlayground extends HTMLElement {
       duration: pg.duration,
       poses: pg.poses(),
       status: pg.status(),
-      // At t = 0 a trail is the start alone (nothing to draw): skip copying the rings, which
-      // keeps a drag at t = 0 free of large allocations.
-      trails: pg.historyLength > 1 ? pg.trails() : NO_TRAILS,
+      // The rings are read in place (see trailsView), never copied.
+      trails: NO_TRAILS,
       trailHead: pg.trailHead,
       trailLens: Array.from({ length: pg.robotCount }, (_, i) => pg.trailLength(i)),
       trailTimes: pg.trailTimes(),
@@ -450,6 +450,12 @@ export class DvfPlayground extends HTMLElement {
       predictedMinPair: pg.predictedMinPair(),
     };
     this.fixSelection();
+  }
+
+  /** The trail rings as a view into wasm memory (no copy); valid until the next wasm call. */
+  trailsView() {
+    const length = this.cache.scenario.robots.length * this.limits.trailCapacity * POSE_STRIDE;
+    return new Float64Array(this.memory.buffer, this.pg.trailsPointer, length);
   }
 
   fixSelection() {
@@ -543,6 +549,8 @@ export class DvfPlayground extends HTMLElement {
       curves: this.fieldMode === 'curves' ? this.integralCurves() : null,
       curvePoints: this.limits.curvePoints,
     };
+    // Last, after every other call into wasm this frame: a view is valid until the next one.
+    scene.trails = this.trailsView();
     drawScene(ctx, view, scene);
     this.$('clock').textContent = `t = ${c.time.toFixed(2)} s / ${c.duration.toFixed(2)} s${this.playing ? '' : ' (paused)'}`;
     this.$('hint').textContent = this.hintText();

@@ -295,6 +295,14 @@ await run(async ({ base, newPage }) => {
   await frames(page);
   await page.screenshot({ path: join(RESULTS, 'main-playing.png') });
   const playedTo = await page.evaluate((sel) => document.querySelector(sel).cache.time, PG);
+  const trail = await page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    const view = el.trailsView(); // the ring, read in place in wasm memory
+    const cap = el.limits.trailCapacity;
+    const newest = (el.pg.trailHead - 1 + cap) % cap;
+    return { len: el.pg.trailLength(0), same: view[newest * 3] === el.cache.poses[0] && view[newest * 3 + 1] === el.cache.poses[1] };
+  }, PG);
+  check(trail.len > 10 && trail.same, `playing fills robot 1's trail (${trail.len} samples), its newest sample the pose now`);
   await page.keyboard.press('r');
   const resetTo = await page.evaluate((sel) => document.querySelector(sel).cache.time, PG);
   check(afterStep > 0 && playedTo > 1 && resetTo === 0, `keys S, Space and R step (t = ${afterStep}), play (t = ${playedTo.toFixed(2)}) and reset`);
