@@ -14,8 +14,8 @@
 
 import init, { Playground, defaultPreset, playgroundLimits, presetScenario, presets } from './pkg/dvf.js';
 import {
-  FIELD_SPACING_PX, HANDLE_RADIUS_PX, POSE_STRIDE, ROBOT_LENGTH_PX, drawScene, fitCanvas,
-  fittedCamera, handlePoint, makeView,
+  FIELD_SPACING_PX, HANDLE_RADIUS_PX, POSE_STRIDE, drawScene, fitCanvas, fittedCamera,
+  handlePoint, makeView, robotColour,
 } from './render.js';
 import { HEADING_COLOUR, PAIR_COLOUR, POSITION_COLOUR, SAFE_COLOUR, drawPlot, plotSeries } from './plots.js';
 import { buildLegend, buildParams, fillParams } from './panels.js';
@@ -635,6 +635,8 @@ export class DvfPlayground extends HTMLElement {
     const st = this.cache.status;
     const o = i * 6;
     const avoiding = !Number.isNaN(st[o + 4]);
+    // The robot's own colour beside its number, so the text and the canvas match.
+    this.$('robot-info').style.borderLeftColor = robotColour(i);
     this.$('robot-info').textContent =
       `Robot ${i + 1} of ${this.cache.scenario.robots.length}: v = ${st[o].toFixed(2)} m/s, ω = ${st[o + 1].toFixed(2)} rad/s` +
       `${st[o + 2] < 1 ? ', avoiding an obstacle' : ''}${avoiding ? ', avoiding robots' : ''}.`;
