@@ -26,8 +26,10 @@ test-native:
 test-browser: tools
 	wasm-pack test --headless --chrome
 
-# The page as users load it: the release package, served, driven in Chromium (screenshots in test-results/).
+# The pages as users load them: the release package, served, driven in Chromium (screenshots in
+# test-results/, the README picture in docs/playground.png).
 test-e2e: build-wasm
 	node tests/e2e/smoke.mjs
+	node tests/e2e/embed.mjs
 
 test: tools lint test-native test-browser test-e2e

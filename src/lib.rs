@@ -6,6 +6,7 @@ pub mod approx;
 pub mod controller;
 pub mod error;
 pub mod field;
+pub mod live;
 pub mod obstacle;
 pub mod params;
 pub mod presets;

@@ -6,10 +6,15 @@
 //! Per-sample data leaves as flat `Float64Array`s whose layouts are documented on [`Run`].
 //! Every function that takes input returns `Result<_, JsError>` whose message is the core's
 //! [`Error`] text, which names the offending field (`params.k_v: must be positive, not -1`).
+//!
+//! [`Run`] is a whole recorded run; [`Playground`] is the live, editable simulation of the
+//! page (its layouts are documented on it).
 
 use crate::error::Error;
+use crate::live::{self, Live};
 use crate::presets::{self, PRESETS};
 use crate::scenario::Scenario;
+use crate::se2::Pose;
 use crate::sim::{self, Report, Sample};
 use js_sys::Float64Array;
 use serde::Serialize;
@@ -235,6 +240,356 @@ impl Run {
             samples,
             trajectories,
         }
+    }
+}
+
+/// The live simulation behind `<dvf-playground>`: edits apply at once and re-predict (see
+/// [`crate::live`] for what an edit means at `t > 0`).
+///
+/// Flat array layouts (all `Float64Array`, robots in scenario order, lengths in brackets):
+/// - [`poses`](Playground::poses) `[robots · 3]`: `x, y, θ` now (m, m, rad in `(−π, π]`).
+/// - [`status`](Playground::status) `[robots · 6]`: `v, ω, Π ς_i, ς_c, vo_x, vo_y` now
+///   (m/s, rad/s, obstacle keep, robot keep; the virtual obstacle, NaN when there is none).
+/// - [`trails`](Playground::trails) `[robots · TRAIL_CAPACITY · 3]`: one ring of past
+///   `x, y, θ` per robot. The next slot written is [`trailHead`](Playground::trail_head),
+///   shared by all; robot `i` holds its last [`trailLength`](Playground::trail_length)`(i)`
+///   samples, the oldest at `(head − len + TRAIL_CAPACITY) % TRAIL_CAPACITY`.
+///   [`trailTimes`](Playground::trail_times) and [`trailMinPair`](Playground::trail_min_pair)
+///   `[TRAIL_CAPACITY]` are rings of the same slots (time in s, the smallest distance between
+///   two robots, NaN for none), [`historyLength`](Playground::history_length) long.
+///   [`trailsPointer`](Playground::trails_pointer) gives the rings' address for a view
+///   into the module's memory instead of a copy.
+/// - [`predicted`](Playground::predicted) `[robots · samples · 3]`: `x, y, θ` from now to the
+///   end, sample 0 now; [`predictedTimes`](Playground::predicted_times) and
+///   [`predictedMinPair`](Playground::predicted_min_pair) `[samples]`.
+/// - [`sampleField`](Playground::sample_field) `[nx · ny · 4]`: `x, y, Γx, Γy`, row by row
+///   from `ymin`.
+/// - [`integralCurves`](Playground::integral_curves) `[n · n · CURVE_POINTS · 2]`: `x, y`.
+///
+/// Indices and counts arrive as JS numbers and are checked (NaN, negative, fractional and
+/// out-of-range values are errors, never a wrapped index).
+#[wasm_bindgen]
+pub struct Playground {
+    live: Live,
+}
+
+/// Methods exported to JavaScript.
+#[wasm_bindgen]
+impl Playground {
+    /// A live simulation of `scenario` (object or JSON text) at `t = 0`.
+    ///
+    /// # Errors
+    /// The first offending field, or more robots than the playground simulates live.
+    #[wasm_bindgen(constructor)]
+    pub fn new(scenario: JsValue) -> Result<Playground, JsError> {
+        let s = scenario_from_js(scenario).map_err(js_error)?;
+        Ok(Playground {
+            live: Live::new(s).map_err(js_error)?,
+        })
+    }
+
+    /// A live simulation of the preset `name`.
+    ///
+    /// # Errors
+    /// An unknown name; the message lists the names that exist.
+    #[wasm_bindgen(js_name = fromPreset)]
+    pub fn from_preset(name: &str) -> Result<Playground, JsError> {
+        let s = presets::preset(name).map_err(js_error)?;
+        Ok(Playground {
+            live: Live::new(s).map_err(js_error)?,
+        })
+    }
+
+    /// The scenario now (edits included), defaults filled in and bounds resolved.
+    ///
+    /// # Errors
+    /// Only if the JS engine refuses to build the object.
+    pub fn scenario(&self) -> Result<JsValue, JsError> {
+        let mut s = self.live.scenario().clone();
+        s.bounds = Some(s.resolved_bounds());
+        to_js(&s)
+    }
+
+    /// Replaces the scenario (object or JSON text): at `t = 0` wholesale, later from where the
+    /// robots are now. Re-predicts.
+    ///
+    /// # Errors
+    /// The first offending field; the simulation is unchanged then.
+    pub fn edit(&mut self, scenario: JsValue) -> Result<(), JsError> {
+        let s = scenario_from_js(scenario).map_err(js_error)?;
+        self.live.edit(s).map_err(js_error)
+    }
+
+    /// Moves robot `index` to `(x, y, theta)`: its start at `t = 0`, its current pose later.
+    /// Re-predicts.
+    ///
+    /// # Errors
+    /// A bad index, a non-finite value or a pose inside an obstacle.
+    #[wasm_bindgen(js_name = moveRobot)]
+    pub fn move_robot(&mut self, index: f64, x: f64, y: f64, theta: f64) -> Result<(), JsError> {
+        let i = self.index(index)?;
+        self.live
+            .move_robot(i, Pose::new(x, y, theta))
+            .map_err(js_error)
+    }
+
+    /// Back to `t = 0` at the scenario's starts, trails cleared.
+    pub fn reset(&mut self) {
+        self.live.reset();
+    }
+
+    /// Advances up to `n` steps (stopping at the end); returns the steps taken.
+    ///
+    /// # Errors
+    /// `n` not a whole number from 0 to 10⁶.
+    pub fn step(&mut self, n: f64) -> Result<usize, JsError> {
+        let n = whole("n", n, 1_000_000)?;
+        Ok(self.live.step(n))
+    }
+
+    /// Recomputes the predicted paths from now (every edit already does).
+    pub fn predict(&mut self) {
+        self.live.predict();
+    }
+
+    /// Simulated time now (s).
+    #[wasm_bindgen(getter)]
+    #[must_use]
+    pub fn time(&self) -> f64 {
+        self.live.time()
+    }
+
+    /// The scenario's duration (s).
+    #[wasm_bindgen(getter)]
+    #[must_use]
+    pub fn duration(&self) -> f64 {
+        self.live.scenario().duration
+    }
+
+    /// The step size (s).
+    #[wasm_bindgen(getter)]
+    #[must_use]
+    pub fn dt(&self) -> f64 {
+        self.live.scenario().dt
+    }
+
+    /// Whether the clock has reached the end.
+    #[wasm_bindgen(getter)]
+    #[must_use]
+    pub fn finished(&self) -> bool {
+        self.live.finished()
+    }
+
+    /// Number of robots.
+    #[wasm_bindgen(getter, js_name = robotCount)]
+    #[must_use]
+    pub fn robot_count(&self) -> usize {
+        self.live.scenario().robots.len()
+    }
+
+    /// `[robots · 3]`: see [`Playground`].
+    #[must_use]
+    pub fn poses(&self) -> Float64Array {
+        Float64Array::from(self.live.poses())
+    }
+
+    /// `[robots · 6]`: see [`Playground`].
+    #[must_use]
+    pub fn status(&self) -> Float64Array {
+        Float64Array::from(self.live.status())
+    }
+
+    /// `[robots · TRAIL_CAPACITY · 3]`: see [`Playground`].
+    #[must_use]
+    pub fn trails(&self) -> Float64Array {
+        Float64Array::from(self.live.trails())
+    }
+
+    /// Address of the trail rings in the module's memory, for reading them without a copy:
+    /// `new Float64Array(memory.buffer, trailsPointer, robots · TRAIL_CAPACITY · 3)`. The view
+    /// is valid until the next call into the module (a call may move or grow the memory):
+    /// make it just before reading.
+    #[wasm_bindgen(getter, js_name = trailsPointer)]
+    #[must_use]
+    pub fn trails_pointer(&self) -> usize {
+        self.live.trails().as_ptr() as usize
+    }
+
+    /// The ring slot written next.
+    #[wasm_bindgen(getter, js_name = trailHead)]
+    #[must_use]
+    pub fn trail_head(&self) -> usize {
+        self.live.trail_head()
+    }
+
+    /// Samples held in robot `index`'s trail.
+    ///
+    /// # Errors
+    /// A bad index.
+    #[wasm_bindgen(js_name = trailLength)]
+    pub fn trail_length(&self, index: f64) -> Result<usize, JsError> {
+        Ok(self.live.trail_len(self.index(index)?))
+    }
+
+    /// `[TRAIL_CAPACITY]` ring of sample times (s).
+    #[wasm_bindgen(js_name = trailTimes)]
+    #[must_use]
+    pub fn trail_times(&self) -> Float64Array {
+        Float64Array::from(self.live.trail_times())
+    }
+
+    /// `[TRAIL_CAPACITY]` ring of minimum pair distances (NaN: no pair).
+    #[wasm_bindgen(js_name = trailMinPair)]
+    #[must_use]
+    pub fn trail_min_pair(&self) -> Float64Array {
+        Float64Array::from(self.live.trail_min_pair())
+    }
+
+    /// Samples held in the time and pair-distance rings.
+    #[wasm_bindgen(getter, js_name = historyLength)]
+    #[must_use]
+    pub fn history_length(&self) -> usize {
+        self.live.history_len()
+    }
+
+    /// `[robots · samples · 3]` predicted poses.
+    #[must_use]
+    pub fn predicted(&self) -> Float64Array {
+        Float64Array::from(self.live.predicted())
+    }
+
+    /// Samples per robot in the prediction.
+    #[wasm_bindgen(getter, js_name = predictedSamples)]
+    #[must_use]
+    pub fn predicted_samples(&self) -> usize {
+        self.live.predicted_samples()
+    }
+
+    /// `[samples]` predicted times (s).
+    #[wasm_bindgen(js_name = predictedTimes)]
+    #[must_use]
+    pub fn predicted_times(&self) -> Float64Array {
+        Float64Array::from(self.live.predicted_times())
+    }
+
+    /// `[samples]` predicted minimum pair distances (NaN: no pair).
+    #[wasm_bindgen(js_name = predictedMinPair)]
+    #[must_use]
+    pub fn predicted_min_pair(&self) -> Float64Array {
+        Float64Array::from(self.live.predicted_min_pair())
+    }
+
+    /// The field robot `index` follows, sampled on an `nx × ny` grid over the box, at the
+    /// robot's current attitude among the obstacles and the other robots.
+    ///
+    /// # Errors
+    /// A bad index, grid side or box.
+    #[wasm_bindgen(js_name = sampleField)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn sample_field(
+        &mut self,
+        index: f64,
+        xmin: f64,
+        ymin: f64,
+        xmax: f64,
+        ymax: f64,
+        nx: f64,
+        ny: f64,
+    ) -> Result<Float64Array, JsError> {
+        let i = self.index(index)?;
+        let nx = whole("nx", nx, live::MAX_GRID_SIDE)?;
+        let ny = whole("ny", ny, live::MAX_GRID_SIDE)?;
+        let out = self
+            .live
+            .sample_field(i, [xmin, ymin, xmax, ymax], nx, ny)
+            .map_err(js_error)?;
+        Ok(Float64Array::from(out))
+    }
+
+    /// Integral curves of robot `index`'s goal field from an `n × n` grid of starts over the
+    /// box, all with attitude `theta0` (rad) at the start.
+    ///
+    /// # Errors
+    /// A bad index, `n`, box or angle.
+    #[wasm_bindgen(js_name = integralCurves)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn integral_curves(
+        &mut self,
+        index: f64,
+        theta0: f64,
+        xmin: f64,
+        ymin: f64,
+        xmax: f64,
+        ymax: f64,
+        n: f64,
+    ) -> Result<Float64Array, JsError> {
+        let i = self.index(index)?;
+        let n = whole("n", n, live::MAX_CURVE_SIDE)?;
+        let out = self
+            .live
+            .integral_curves(i, theta0, [xmin, ymin, xmax, ymax], n)
+            .map_err(js_error)?;
+        Ok(Float64Array::from(out))
+    }
+}
+
+/// Rust-only helpers.
+impl Playground {
+    /// A robot index from a JS number, checked against the robots there are.
+    fn index(&self, index: f64) -> Result<usize, JsError> {
+        let count = self.live.scenario().robots.len();
+        let i = whole("robot", index, usize::MAX)?;
+        if i >= count {
+            return Err(js_error(Error::RobotIndex { index: i, count }));
+        }
+        Ok(i)
+    }
+}
+
+/// Values per pose in [`Playground::poses`], `trails` and `predicted`.
+pub const POSE_STRIDE: usize = live::POSE_STRIDE;
+/// Values per robot in [`Playground::status`].
+pub const STATUS_STRIDE: usize = live::STATUS_STRIDE;
+/// Values per field sample in [`Playground::sample_field`].
+pub const FIELD_STRIDE: usize = live::FIELD_STRIDE;
+
+/// The playground's layout constants as an object, so that the page reads them rather than
+/// copying them: `{trailCapacity, predictionSamples, curvePoints, maxGridSide, maxCurveSide,
+/// maxRobots}`.
+///
+/// # Errors
+/// Only if the JS engine refuses to build the object.
+#[wasm_bindgen(js_name = playgroundLimits)]
+pub fn playground_limits() -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    #[serde(rename_all = "camelCase")]
+    struct Limits {
+        trail_capacity: usize,
+        prediction_samples: usize,
+        curve_points: usize,
+        max_grid_side: usize,
+        max_curve_side: usize,
+        max_robots: usize,
+    }
+    to_js(&Limits {
+        trail_capacity: live::TRAIL_CAPACITY,
+        prediction_samples: live::PREDICTION_SAMPLES,
+        curve_points: live::CURVE_POINTS,
+        max_grid_side: live::MAX_GRID_SIDE,
+        max_curve_side: live::MAX_CURVE_SIDE,
+        max_robots: live::MAX_LIVE_ROBOTS,
+    })
+}
+
+/// A whole number in `0..=max` from a JS number; NaN, infinities, negatives and fractions are
+/// errors naming `field`.
+fn whole(field: &str, v: f64, max: usize) -> Result<usize, JsError> {
+    if v.is_finite() && v >= 0.0 && v.fract() == 0.0 && v <= max as f64 {
+        Ok(v as usize)
+    } else {
+        Err(JsError::new(&format!(
+            "{field}: must be a whole number from 0 to {max}, not {v}"
+        )))
     }
 }
 

@@ -2,8 +2,12 @@
 //! `wasm-pack test --headless --chrome -- --test web_facade`.
 #![cfg(target_arch = "wasm32")]
 
+use dvf::live::{CURVE_POINTS, MAX_LIVE_ROBOTS, TRAIL_CAPACITY};
 use dvf::presets::{DEFAULT_PRESET, PRESETS};
-use dvf::wasm::{default_preset, preset_scenario, presets, Run, SAMPLE_STRIDE};
+use dvf::wasm::{
+    default_preset, playground_limits, preset_scenario, presets, Playground, Run, FIELD_STRIDE,
+    POSE_STRIDE, SAMPLE_STRIDE, STATUS_STRIDE,
+};
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 
@@ -100,4 +104,188 @@ fn bad_scenarios_name_the_field() {
     );
     let unknown = message(preset_scenario("nope").err().unwrap());
     assert!(unknown.contains(DEFAULT_PRESET), "{unknown}");
+}
+
+fn get(object: &JsValue, key: &str) -> JsValue {
+    js_sys::Reflect::get(object, &key.into()).unwrap()
+}
+
+fn text(v: &JsValue) -> String {
+    String::from(js_sys::JSON::stringify(v).unwrap())
+}
+
+#[wasm_bindgen_test]
+fn playground_arrays_have_the_documented_layouts() {
+    let mut pg = Playground::from_preset(DEFAULT_PRESET).unwrap();
+    let n = pg.robot_count();
+    assert_eq!(n, 10);
+    assert_eq!(pg.poses().length() as usize, n * POSE_STRIDE);
+    assert_eq!(pg.status().length() as usize, n * STATUS_STRIDE);
+    assert_eq!(
+        pg.trails().length() as usize,
+        n * TRAIL_CAPACITY * POSE_STRIDE
+    );
+    assert_eq!(pg.trail_times().length() as usize, TRAIL_CAPACITY);
+    assert_eq!(pg.trail_min_pair().length() as usize, TRAIL_CAPACITY);
+    // At t = 0 the history holds the start, and the prediction starts there too.
+    assert_eq!((pg.history_length(), pg.trail_head()), (1, 1));
+    assert_eq!(pg.trail_length(0.0).unwrap(), 1);
+    let samples = pg.predicted_samples();
+    assert!(samples >= 2);
+    let predicted = pg.predicted().to_vec();
+    assert_eq!(predicted.len(), n * samples * POSE_STRIDE);
+    assert_eq!(pg.predicted_times().length() as usize, samples);
+    assert_eq!(pg.predicted_min_pair().length() as usize, samples);
+    assert_eq!(&predicted[..3], &pg.poses().to_vec()[..3]);
+    // Robot 2's prediction starts at robot 2's pose: robot-major layout.
+    assert_eq!(
+        &predicted[samples * POSE_STRIDE..samples * POSE_STRIDE + 3],
+        &pg.poses().to_vec()[3..6]
+    );
+    let field = pg
+        .sample_field(0.0, -10.0, -5.0, 10.0, 5.0, 5.0, 3.0)
+        .unwrap()
+        .to_vec();
+    assert_eq!(field.len(), 5 * 3 * FIELD_STRIDE);
+    assert_eq!(&field[..2], &[-10.0, -5.0]);
+    assert_eq!(&field[(5 * 3 - 1) * FIELD_STRIDE..][..2], &[10.0, 5.0]);
+    let curves = pg
+        .integral_curves(0.0, 1.5, -10.0, -10.0, 10.0, 10.0, 2.0)
+        .unwrap();
+    assert_eq!(curves.length() as usize, 2 * 2 * CURVE_POINTS * 2);
+    // Stepping fills the rings and moves the clock.
+    assert_eq!(pg.step(10.0).unwrap(), 10);
+    assert!((pg.time() - 0.1).abs() < 1e-12);
+    let limits = playground_limits().unwrap();
+    assert_eq!(
+        get(&limits, "trailCapacity").as_f64(),
+        Some(TRAIL_CAPACITY as f64)
+    );
+    assert_eq!(
+        get(&limits, "maxRobots").as_f64(),
+        Some(MAX_LIVE_ROBOTS as f64)
+    );
+}
+
+#[wasm_bindgen_test]
+fn playground_scenarios_round_trip() {
+    let object = preset_scenario("example3-line-swap").unwrap();
+    let mut pg = Playground::new(object.clone()).unwrap();
+    assert_eq!(text(&pg.scenario().unwrap()), text(&object));
+    // A drag at t = 0 edits the start, and the scenario read back runs the same.
+    pg.move_robot(1.0, 3.0, 4.0, 0.5).unwrap();
+    let edited = pg.scenario().unwrap();
+    let start = js_sys::Array::from(&get(
+        &js_sys::Array::from(&get(&edited, "robots")).get(1),
+        "start",
+    ));
+    assert_eq!(
+        start
+            .to_vec()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect::<Vec<_>>(),
+        [3.0, 4.0, 0.5]
+    );
+    let again = Playground::new(text(&edited).into()).unwrap();
+    assert_eq!(again.predicted().to_vec(), pg.predicted().to_vec());
+    // An edit through an object; at t > 0 the clock and the poses stay.
+    pg.step(50.0).unwrap();
+    let poses = pg.poses().to_vec();
+    let changed = scenario_from_json(&text(&edited).replace("\"k_v\":1.0", "\"k_v\":2.0"));
+    pg.edit(changed).unwrap();
+    assert_eq!(pg.poses().to_vec(), poses);
+    assert!((pg.time() - 0.5).abs() < 1e-12);
+    pg.reset();
+    assert_eq!(pg.time(), 0.0);
+}
+
+#[wasm_bindgen_test]
+fn playground_rejects_bad_input_with_the_field_named() {
+    let mut pg = Playground::from_preset("example3-line-swap").unwrap();
+    let n = pg.robot_count();
+    let cases: Vec<(Result<(), wasm_bindgen::JsError>, String)> = vec![
+        (
+            pg.move_robot(f64::NAN, 0.0, 0.0, 0.0),
+            "robot: must be a whole number".into(),
+        ),
+        (
+            pg.move_robot(-1.0, 0.0, 0.0, 0.0),
+            "robot: must be a whole number".into(),
+        ),
+        (
+            pg.move_robot(0.5, 0.0, 0.0, 0.0),
+            "robot: must be a whole number".into(),
+        ),
+        (
+            pg.move_robot(n as f64, 0.0, 0.0, 0.0),
+            format!("robot: index {n} is out of range"),
+        ),
+        (
+            pg.move_robot(0.0, f64::NAN, 0.0, 0.0),
+            "robots[0].start[0]: must be a finite number".into(),
+        ),
+        (
+            pg.move_robot(0.0, 0.0, f64::INFINITY, 0.0),
+            "robots[0].start[1]: must be a finite number".into(),
+        ),
+        (pg.step(-1.0).map(drop), "n: must be a whole number".into()),
+        (
+            pg.step(f64::NAN).map(drop),
+            "n: must be a whole number".into(),
+        ),
+        (
+            pg.sample_field(0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 4.0).map(drop),
+            "nx: must be between 2".into(),
+        ),
+        (
+            pg.sample_field(0.0, 0.0, 0.0, f64::NAN, 1.0, 4.0, 4.0)
+                .map(drop),
+            "bounds: must be four finite numbers".into(),
+        ),
+        (
+            pg.integral_curves(0.0, f64::NAN, 0.0, 0.0, 1.0, 1.0, 3.0)
+                .map(drop),
+            "theta0: must be a finite angle".into(),
+        ),
+        (
+            pg.edit(r#"{"robots":[{"start":[0,0,0],"goal":[1,2,3]}],"params":{"kv":1}}"#.into()),
+            "params.kv".into(),
+        ),
+        (
+            pg.edit(
+                r#"{"robots":[{"start":[0,0,0],"goal":[1,2,3]}],"params":{"safe_radius":5}}"#
+                    .into(),
+            ),
+            "params.avoid_radius: must exceed params.safe_radius".into(),
+        ),
+    ];
+    for (result, expected) in cases {
+        let m = message(result.expect_err(&expected));
+        assert!(m.starts_with(&expected), "{m} (expected {expected})");
+    }
+    // Nothing was changed by the refused calls.
+    assert_eq!(
+        text(&pg.scenario().unwrap()),
+        text(&preset_scenario("example3-line-swap").unwrap())
+    );
+    let many = format!(
+        r#"{{"robots":[{}]}}"#,
+        (0..=MAX_LIVE_ROBOTS)
+            .map(|k| format!(r#"{{"start":[{k},0,0],"goal":[{k},10,0]}}"#))
+            .collect::<Vec<_>>()
+            .join(",")
+    );
+    let m = message(Playground::new(many.into()).err().unwrap());
+    assert!(
+        m.starts_with("robots: the playground simulates at most"),
+        "{m}"
+    );
+    // A scenario too long to predict on every edit is refused before it can freeze the page.
+    let long = r#"{"duration":3000,"dt":0.01,"robots":[{"start":[0,0,0],"goal":[1,2,3]}]}"#;
+    let m = message(Playground::new(long.into()).err().unwrap());
+    assert!(
+        m.starts_with("duration: the playground runs at most"),
+        "{m}"
+    );
 }

@@ -1,7 +1,6 @@
-// Drawing: the world-to-screen view (equal aspect, y up) and the scene on a 2-D canvas.
-// All sizes below are CSS pixels; the backing store is scaled by devicePixelRatio.
-
-import { OBSTACLE_STRIDE, POSE_STRIDE, SAMPLE_STRIDE, locateTime, poseAt, sampleOffset } from './state.js';
+// Drawing: the world-to-screen view (equal aspect, y up, pan and zoom) and the live scene on a
+// 2-D canvas. All sizes are CSS pixels; the backing store is scaled by devicePixelRatio.
+// Knows nothing of the DOM beyond the canvas it is given.
 
 /** One colour per robot, cycled (Tableau 10: distinct, and legible on white). */
 export const ROBOT_COLOURS = [
@@ -16,24 +15,42 @@ const LABEL_COLOUR = '#6b7280';
 export const OBSTACLE_FILL = '#4b5563';
 export const INFLUENCE_STROKE = '#9ca3af';
 export const INFLUENCE_FILL = 'rgba(156, 163, 175, 0.14)';
+export const FIELD_COLOUR = '#94a3b8';
+export const CURVE_COLOUR = '#7c3aed';
+export const VIRTUAL_OBSTACLE_COLOUR = '#dc2626';
+export const SENSE_COLOUR = 'rgba(37, 99, 235, 0.35)';
+export const HANDLE_FILL = '#ffffff';
+export const HANDLE_STROKE = '#111827';
+export const SELECTION_COLOUR = '#2563eb';
 
-/** Space kept free around the scenario's bounds (CSS px): left and bottom hold the labels. */
+/** Space kept free around the scenario's bounds when fitting (CSS px). */
 const MARGIN_PX = { left: 44, right: 14, top: 14, bottom: 26 };
 /** Desired distance between grid lines (CSS px); the step is rounded to 1, 2 or 5 × 10^k m. */
 const GRID_SPACING_PX = 70;
 const LABEL_FONT = '11px system-ui, sans-serif';
 /** Robot glyph: length nose to tail and width at the tail (CSS px). */
-export const ROBOT_LENGTH_PX = 16;
-export const ROBOT_WIDTH_PX = 11;
+export const ROBOT_LENGTH_PX = 18;
+export const ROBOT_WIDTH_PX = 12;
 /** Start and goal glyphs are smaller than the moving robot. */
-export const MARKER_SCALE = 0.8;
-/** Line widths (CSS px). */
-const TRAIL_WIDTH_PX = 2;
-const TRAIL_AHEAD_ALPHA = 0.25;
-const START_ALPHA = 0.6;
+export const MARKER_SCALE = 0.85;
+/** Heading handles sit this far from the body's centre (CSS px), radius HANDLE_RADIUS_PX. */
+export const HANDLE_DISTANCE_PX = 30;
+export const HANDLE_RADIUS_PX = 5;
+/** Field arrows: one per FIELD_SPACING_PX, at most FIELD_ARROW_PX long. */
+export const FIELD_SPACING_PX = 34;
+const FIELD_ARROW_PX = 22;
+const TRAIL_WIDTH_PX = 2.5;
+const PREDICTED_WIDTH_PX = 1.75;
+const PREDICTED_ALPHA = 0.55;
+const PREDICTED_DASH_PX = [5, 4];
+const START_ALPHA = 0.45;
 const GOAL_DASH_PX = [3, 2];
 const INFLUENCE_DASH_PX = [6, 4];
 const SAFE_DASH_PX = [2, 3];
+/** Values per pose / per status / per field sample / per obstacle in the wasm arrays. */
+export const POSE_STRIDE = 3;
+export const STATUS_STRIDE = 6;
+export const FIELD_STRIDE = 4;
 
 /** Colour of robot `i`. */
 export function robotColour(i) {
@@ -46,61 +63,90 @@ export function robotColour(i) {
  */
 export function fitCanvas(canvas) {
   const dpr = window.devicePixelRatio || 1;
-  const rect = canvas.getBoundingClientRect();
-  const width = Math.max(1, Math.round(rect.width * dpr));
-  const height = Math.max(1, Math.round(rect.height * dpr));
-  if (canvas.width !== width) canvas.width = width;
-  if (canvas.height !== height) canvas.height = height;
+  const width = Math.max(1, canvas.clientWidth);
+  const height = Math.max(1, canvas.clientHeight);
+  const bw = Math.max(1, Math.round(width * dpr));
+  const bh = Math.max(1, Math.round(height * dpr));
+  if (canvas.width !== bw) canvas.width = bw;
+  if (canvas.height !== bh) canvas.height = bh;
   const ctx = canvas.getContext('2d');
   ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
-  return { ctx, width: rect.width, height: rect.height };
+  return { ctx, width, height };
 }
 
-/** The world-to-screen map fitting `bounds` into a `width`×`height` box, equal aspect, y up. */
-export function makeView(bounds, width, height) {
+/**
+ * A view: world centre (m) and scale (CSS px per m) for a `width`×`height` box. `fitted`
+ * places `bounds` in the box, equal aspect.
+ */
+export function fittedCamera(bounds, width, height) {
   const [xmin, ymin, xmax, ymax] = bounds;
   const innerW = Math.max(1, width - MARGIN_PX.left - MARGIN_PX.right);
   const innerH = Math.max(1, height - MARGIN_PX.top - MARGIN_PX.bottom);
-  const scale = Math.min(innerW / (xmax - xmin), innerH / (ymax - ymin)); // px per m
-  const ox = MARGIN_PX.left + (innerW - scale * (xmax - xmin)) / 2;
-  const oy = MARGIN_PX.top + (innerH - scale * (ymax - ymin)) / 2;
+  const scale = Math.min(innerW / (xmax - xmin), innerH / (ymax - ymin));
+  // The centre of the box shifted so that the margins (labels) stay clear.
+  const cx = (xmin + xmax) / 2 - (MARGIN_PX.left - MARGIN_PX.right) / 2 / scale;
+  const cy = (ymin + ymax) / 2 + (MARGIN_PX.top - MARGIN_PX.bottom) / 2 / scale;
+  return { cx, cy, scale };
+}
+
+/** The world↔screen maps of a camera in a `width`×`height` box (y up on screen). */
+export function makeView(camera, width, height) {
+  const { cx, cy, scale } = camera;
+  const ox = width / 2 - cx * scale;
+  const oy = height / 2 + cy * scale;
   return {
     scale,
     width,
     height,
-    sx: (x) => ox + (x - xmin) * scale,
-    sy: (y) => oy + (ymax - y) * scale,
-    wx: (px) => xmin + (px - ox) / scale,
-    wy: (py) => ymax - (py - oy) / scale,
+    sx: (x) => ox + x * scale,
+    sy: (y) => oy - y * scale,
+    wx: (px) => (px - ox) / scale,
+    wy: (py) => (oy - py) / scale,
   };
 }
 
-/** Draws the whole scene for `model` at time `t` (s). */
-export function drawScene(ctx, view, model, t) {
+/**
+ * Draws the whole live scene. `scene` holds what the element read from wasm this frame:
+ * scenario, poses, status, trails (+ head, lens), predicted (+ samples), field, curves,
+ * selection and display options.
+ */
+export function drawScene(ctx, view, scene) {
+  const s = scene.scenario;
   ctx.fillStyle = CANVAS_BACKGROUND;
   ctx.fillRect(0, 0, view.width, view.height);
-  const [xmin, ymin, xmax, ymax] = model.bounds;
+  const [xmin, ymin, xmax, ymax] = s.bounds;
   ctx.fillStyle = BOUNDS_FILL;
   ctx.fillRect(view.sx(xmin), view.sy(ymax), (xmax - xmin) * view.scale, (ymax - ymin) * view.scale);
   drawGrid(ctx, view);
-  drawObstacles(ctx, view, model);
-  const at = locateTime(model, t);
-  for (let i = 0; i < model.robotCount; i++) drawTrail(ctx, view, model, i, at);
-  for (let i = 0; i < model.robotCount; i++) {
+  if (scene.curves) drawCurves(ctx, view, scene.curves, scene.curvePoints);
+  drawObstacles(ctx, view, s.obstacles, scene.selection);
+  if (scene.field) drawField(ctx, view, scene.field, s.obstacles);
+  const n = s.robots.length;
+  for (let i = 0; i < n; i++) drawPredicted(ctx, view, scene, i);
+  for (let i = 0; i < n; i++) drawTrail(ctx, view, scene, i);
+  const atStart = scene.time === 0;
+  for (let i = 0; i < n; i++) {
     const colour = robotColour(i);
-    const s = i * POSE_STRIDE;
-    const g = model.goals;
-    drawGoal(ctx, view.sx(g[s]), view.sy(g[s + 1]), g[s + 2], colour);
-    const st = model.starts;
-    drawStart(ctx, view.sx(st[s]), view.sy(st[s + 1]), st[s + 2], colour);
+    const g = s.robots[i].goal;
+    drawGoal(ctx, view.sx(g[0]), view.sy(g[1]), g[2], colour);
+    if (!atStart) {
+      const st = s.robots[i].start;
+      drawStart(ctx, view.sx(st[0]), view.sy(st[1]), st[2], colour);
+    }
   }
-  for (let i = 0; i < model.robotCount; i++) {
-    const p = poseAt(model, i, at);
-    const x = view.sx(p.x);
-    const y = view.sy(p.y);
-    if (!model.independent) drawSafeDisc(ctx, x, y, model.safeRadius * view.scale, robotColour(i));
-    drawRobot(ctx, x, y, p.theta, robotColour(i));
+  const p = scene.poses;
+  const rs = s.params.safe_radius;
+  for (let i = 0; i < n; i++) {
+    const x = view.sx(p[i * POSE_STRIDE]);
+    const y = view.sy(p[i * POSE_STRIDE + 1]);
+    if (scene.showSensing) drawSenseCircle(ctx, x, y, s.params.sense_radius * view.scale);
+    if (!s.independent) drawSafeDisc(ctx, x, y, rs * view.scale, robotColour(i));
   }
+  if (!s.independent) drawVirtualObstacles(ctx, view, scene);
+  for (let i = 0; i < n; i++) {
+    drawRobot(ctx, view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), p[i * POSE_STRIDE + 2], robotColour(i));
+  }
+  drawSelection(ctx, view, scene);
   drawLabels(ctx, view);
 }
 
@@ -152,27 +198,35 @@ function drawLabels(ctx, view) {
   ctx.textBaseline = 'bottom';
   for (const x of xs) {
     const px = view.sx(x);
-    if (px > MARGIN_PX.left && px < view.width - 10) ctx.fillText(x.toFixed(decimals), px, view.height - 6);
+    if (px > 40 && px < view.width - 10) ctx.fillText(x.toFixed(decimals), px, view.height - 6);
   }
   ctx.textAlign = 'right';
   ctx.textBaseline = 'middle';
   for (const y of ys) {
     const py = view.sy(y);
-    if (py > 8 && py <= view.height - MARGIN_PX.bottom + 1) ctx.fillText(y.toFixed(decimals), MARGIN_PX.left - 6, py);
+    if (py > 8 && py <= view.height - 24) ctx.fillText(y.toFixed(decimals), 36, py);
   }
   ctx.textAlign = 'left';
   ctx.textBaseline = 'bottom';
   ctx.fillText('m', 4, view.height - 6);
 }
 
-function drawObstacles(ctx, view, model) {
-  const ob = model.obstacles;
-  for (let o = 0; o < ob.length; o += OBSTACLE_STRIDE) {
-    const x = view.sx(ob[o]);
-    const y = view.sy(ob[o + 1]);
-    drawInfluence(ctx, x, y, ob[o + 3] * view.scale);
-    drawObstacleDisc(ctx, x, y, ob[o + 2] * view.scale);
-  }
+function drawObstacles(ctx, view, obstacles, selection) {
+  obstacles.forEach((o, k) => {
+    const x = view.sx(o.center[0]);
+    const y = view.sy(o.center[1]);
+    drawInfluence(ctx, x, y, o.influence * view.scale);
+    drawObstacleDisc(ctx, x, y, o.radius * view.scale);
+    if (selection?.kind === 'obstacle' && selection.index === k) {
+      ctx.beginPath();
+      ctx.arc(x, y, o.radius * view.scale + 3, 0, 2 * Math.PI);
+      ctx.lineWidth = 2;
+      ctx.strokeStyle = SELECTION_COLOUR;
+      ctx.stroke();
+      drawHandle(ctx, x + o.radius * view.scale, y);
+      drawHandle(ctx, x + o.influence * view.scale, y);
+    }
+  });
 }
 
 /** The influence ring R_o: a faint disc with a dashed edge (radius in CSS px). */
@@ -201,33 +255,193 @@ export function drawObstacleDisc(ctx, x, y, radius) {
   ctx.fill();
 }
 
-/** Robot `i`'s path: solid up to the shown time, faint beyond it. */
-function drawTrail(ctx, view, model, i, at) {
-  const tr = model.trajectories;
-  const first = sampleOffset(model, i, 0);
-  const now = poseAt(model, i, at);
+/** Field arrows, each scaled to FIELD_ARROW_PX at the largest magnitude shown (log-ish). */
+function drawField(ctx, view, field, obstacles) {
+  let max = 0;
+  for (let k = 0; k < field.length; k += FIELD_STRIDE) {
+    max = Math.max(max, Math.hypot(field[k + 2], field[k + 3]));
+  }
+  if (!(max > 0)) return;
+  ctx.strokeStyle = FIELD_COLOUR;
+  ctx.fillStyle = FIELD_COLOUR;
+  ctx.lineWidth = 1.1;
+  ctx.beginPath();
+  const heads = [];
+  for (let k = 0; k < field.length; k += FIELD_STRIDE) {
+    const [x, y, gx, gy] = [field[k], field[k + 1], field[k + 2], field[k + 3]];
+    if (obstacles.some((o) => Math.hypot(x - o.center[0], y - o.center[1]) < o.radius)) continue;
+    const m = Math.hypot(gx, gy);
+    if (!(m > 0)) continue;
+    // Length grows with magnitude but saturates, so arrows near the goal stay visible.
+    const len = FIELD_ARROW_PX * (0.35 + 0.65 * Math.sqrt(m / max));
+    const ux = gx / m;
+    const uy = -gy / m; // screen y is down
+    const px = view.sx(x) - (ux * len) / 2;
+    const py = view.sy(y) - (uy * len) / 2;
+    ctx.moveTo(px, py);
+    ctx.lineTo(px + ux * len, py + uy * len);
+    heads.push([px + ux * len, py + uy * len, ux, uy]);
+  }
+  ctx.stroke();
+  ctx.beginPath();
+  for (const [hx, hy, ux, uy] of heads) {
+    ctx.moveTo(hx, hy);
+    ctx.lineTo(hx - ux * 5 - uy * 2.5, hy - uy * 5 + ux * 2.5);
+    ctx.lineTo(hx - ux * 5 + uy * 2.5, hy - uy * 5 - ux * 2.5);
+    ctx.closePath();
+  }
+  ctx.fill();
+}
+
+/** Integral curves of the goal field, each from its start (dot) on. */
+function drawCurves(ctx, view, curves, points) {
+  ctx.strokeStyle = CURVE_COLOUR;
+  ctx.globalAlpha = 0.6;
+  ctx.lineWidth = 1.2;
+  ctx.beginPath();
+  const stride = points * 2;
+  for (let c = 0; c + stride <= curves.length; c += stride) {
+    ctx.moveTo(view.sx(curves[c]), view.sy(curves[c + 1]));
+    for (let k = 2; k < stride; k += 2) ctx.lineTo(view.sx(curves[c + k]), view.sy(curves[c + k + 1]));
+  }
+  ctx.stroke();
+  ctx.globalAlpha = 1;
+  ctx.fillStyle = CURVE_COLOUR;
+  ctx.beginPath();
+  for (let c = 0; c + stride <= curves.length; c += stride) {
+    ctx.moveTo(view.sx(curves[c]) + 2, view.sy(curves[c + 1]));
+    ctx.arc(view.sx(curves[c]), view.sy(curves[c + 1]), 2, 0, 2 * Math.PI);
+  }
+  ctx.fill();
+}
+
+/** Robot `i`'s predicted path from now to the end: dashed, in its colour. */
+function drawPredicted(ctx, view, scene, i) {
+  const n = scene.predictedSamples;
+  const p = scene.predicted;
+  if (n < 2) return;
+  const o = i * n * POSE_STRIDE;
+  ctx.beginPath();
+  ctx.moveTo(view.sx(p[o]), view.sy(p[o + 1]));
+  for (let k = 1; k < n; k++) ctx.lineTo(view.sx(p[o + k * POSE_STRIDE]), view.sy(p[o + k * POSE_STRIDE + 1]));
+  ctx.globalAlpha = PREDICTED_ALPHA;
+  ctx.lineJoin = 'round';
+  strokeDashed(ctx, PREDICTED_DASH_PX, PREDICTED_WIDTH_PX, robotColour(i));
+  ctx.globalAlpha = 1;
+}
+
+/** Robot `i`'s trail: the ring of past poses, oldest first, solid. */
+function drawTrail(ctx, view, scene, i) {
+  const len = scene.trailLens[i];
+  if (len < 2) return;
+  const cap = scene.trailCapacity;
+  const t = scene.trails;
+  const base = i * cap * POSE_STRIDE;
+  let slot = (scene.trailHead - len + cap) % cap;
+  ctx.beginPath();
+  ctx.moveTo(view.sx(t[base + slot * POSE_STRIDE]), view.sy(t[base + slot * POSE_STRIDE + 1]));
+  for (let k = 1; k < len; k++) {
+    slot = (slot + 1) % cap;
+    ctx.lineTo(view.sx(t[base + slot * POSE_STRIDE]), view.sy(t[base + slot * POSE_STRIDE + 1]));
+  }
   ctx.lineWidth = TRAIL_WIDTH_PX;
   ctx.lineJoin = 'round';
   ctx.lineCap = 'round';
   ctx.strokeStyle = robotColour(i);
-
-  ctx.globalAlpha = TRAIL_AHEAD_ALPHA;
-  ctx.beginPath();
-  ctx.moveTo(view.sx(now.x), view.sy(now.y));
-  for (let k = at.k + 1; k < model.sampleCount; k++) {
-    const o = first + k * SAMPLE_STRIDE;
-    ctx.lineTo(view.sx(tr[o + 1]), view.sy(tr[o + 2]));
-  }
   ctx.stroke();
+}
 
+/** Virtual obstacles (robots avoiding each other): a red cross and the ring R_c. */
+function drawVirtualObstacles(ctx, view, scene) {
+  const st = scene.status;
+  const rc = scene.scenario.params.avoid_radius * view.scale;
+  const seen = new Set();
+  for (let k = 0; k < st.length; k += STATUS_STRIDE) {
+    const vx = st[k + 4];
+    const vy = st[k + 5];
+    if (Number.isNaN(vx)) continue;
+    const key = `${vx.toFixed(3)},${vy.toFixed(3)}`;
+    if (seen.has(key)) continue;
+    seen.add(key);
+    drawVirtualObstacle(ctx, view.sx(vx), view.sy(vy), rc);
+  }
+}
+
+/** One virtual obstacle glyph at (x, y) with ring radius `rc` (CSS px). */
+export function drawVirtualObstacle(ctx, x, y, rc) {
+  ctx.beginPath();
+  ctx.arc(x, y, rc, 0, 2 * Math.PI);
+  ctx.globalAlpha = 0.7;
+  strokeDashed(ctx, [4, 3], 1.25, VIRTUAL_OBSTACLE_COLOUR);
   ctx.globalAlpha = 1;
   ctx.beginPath();
-  ctx.moveTo(view.sx(tr[first + 1]), view.sy(tr[first + 2]));
-  for (let k = 1; k <= at.k; k++) {
-    const o = first + k * SAMPLE_STRIDE;
-    ctx.lineTo(view.sx(tr[o + 1]), view.sy(tr[o + 2]));
+  ctx.moveTo(x - 4, y - 4);
+  ctx.lineTo(x + 4, y + 4);
+  ctx.moveTo(x + 4, y - 4);
+  ctx.lineTo(x - 4, y + 4);
+  ctx.lineWidth = 2;
+  ctx.strokeStyle = VIRTUAL_OBSTACLE_COLOUR;
+  ctx.stroke();
+}
+
+/** The sensing circle R_s (radius in CSS px). */
+export function drawSenseCircle(ctx, x, y, radius) {
+  ctx.beginPath();
+  ctx.arc(x, y, radius, 0, 2 * Math.PI);
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = SENSE_COLOUR;
+  ctx.stroke();
+}
+
+/** The selected robot (or its goal): a ring and the heading handles of body and goal. */
+function drawSelection(ctx, view, scene) {
+  const f = scene.focusRobot;
+  if (f != null && f < scene.scenario.robots.length) {
+    // The robot whose field is drawn: a faint halo even when nothing is selected.
+    ctx.beginPath();
+    ctx.arc(view.sx(scene.poses[f * POSE_STRIDE]), view.sy(scene.poses[f * POSE_STRIDE + 1]), ROBOT_LENGTH_PX, 0, 2 * Math.PI);
+    ctx.fillStyle = 'rgba(37, 99, 235, 0.12)';
+    ctx.fill();
   }
-  ctx.lineTo(view.sx(now.x), view.sy(now.y));
+  const sel = scene.selection;
+  if (!sel || (sel.kind !== 'robot' && sel.kind !== 'goal')) return;
+  const i = sel.index;
+  const r = scene.scenario.robots[i];
+  if (!r) return;
+  const p = scene.poses;
+  const bodies = [
+    [view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), p[i * POSE_STRIDE + 2], sel.kind === 'robot'],
+    [view.sx(r.goal[0]), view.sy(r.goal[1]), r.goal[2], sel.kind === 'goal'],
+  ];
+  for (const [x, y, theta, active] of bodies) {
+    ctx.beginPath();
+    ctx.arc(x, y, ROBOT_LENGTH_PX * 0.8, 0, 2 * Math.PI);
+    ctx.lineWidth = active ? 2 : 1;
+    ctx.strokeStyle = SELECTION_COLOUR;
+    ctx.stroke();
+    const [hx, hy] = handlePoint(x, y, theta);
+    ctx.beginPath();
+    ctx.moveTo(x + Math.cos(theta) * ROBOT_LENGTH_PX * 0.8, y - Math.sin(theta) * ROBOT_LENGTH_PX * 0.8);
+    ctx.lineTo(hx, hy);
+    ctx.lineWidth = 1.25;
+    ctx.stroke();
+    drawHandle(ctx, hx, hy);
+  }
+}
+
+/** Screen position of the heading handle of a body at (x, y) heading `theta`. */
+export function handlePoint(x, y, theta) {
+  return [x + Math.cos(theta) * HANDLE_DISTANCE_PX, y - Math.sin(theta) * HANDLE_DISTANCE_PX];
+}
+
+/** A round drag handle. */
+export function drawHandle(ctx, x, y) {
+  ctx.beginPath();
+  ctx.arc(x, y, HANDLE_RADIUS_PX, 0, 2 * Math.PI);
+  ctx.fillStyle = HANDLE_FILL;
+  ctx.fill();
+  ctx.lineWidth = 1.5;
+  ctx.strokeStyle = HANDLE_STROKE;
   ctx.stroke();
 }
 
@@ -278,6 +492,60 @@ export function drawSafeDisc(ctx, x, y, radius, colour) {
   ctx.beginPath();
   ctx.arc(x, y, radius, 0, 2 * Math.PI);
   strokeDashed(ctx, SAFE_DASH_PX, 1, colour);
+}
+
+/** A predicted-path glyph for the legend. */
+export function drawPredictedGlyph(ctx, x, y, colour) {
+  ctx.beginPath();
+  ctx.moveTo(x - 10, y + 5);
+  ctx.lineTo(x + 10, y - 5);
+  ctx.globalAlpha = PREDICTED_ALPHA + 0.2;
+  strokeDashed(ctx, [4, 3], PREDICTED_WIDTH_PX, colour);
+  ctx.globalAlpha = 1;
+}
+
+/** A trail glyph for the legend. */
+export function drawTrailGlyph(ctx, x, y, colour) {
+  ctx.beginPath();
+  ctx.moveTo(x - 10, y + 5);
+  ctx.quadraticCurveTo(x, y + 6, x + 10, y - 5);
+  ctx.lineWidth = TRAIL_WIDTH_PX;
+  ctx.lineCap = 'round';
+  ctx.strokeStyle = colour;
+  ctx.stroke();
+}
+
+/** A field-arrow glyph for the legend. */
+export function drawArrowGlyph(ctx, x, y) {
+  ctx.strokeStyle = FIELD_COLOUR;
+  ctx.fillStyle = FIELD_COLOUR;
+  ctx.lineWidth = 1.1;
+  ctx.beginPath();
+  ctx.moveTo(x - 8, y + 4);
+  ctx.lineTo(x + 8, y - 4);
+  ctx.stroke();
+  const ux = 16 / Math.hypot(16, 8);
+  const uy = -8 / Math.hypot(16, 8);
+  ctx.beginPath();
+  ctx.moveTo(x + 8, y - 4);
+  ctx.lineTo(x + 8 - ux * 5 - uy * 2.5, y - 4 - uy * 5 + ux * 2.5);
+  ctx.lineTo(x + 8 - ux * 5 + uy * 2.5, y - 4 - uy * 5 - ux * 2.5);
+  ctx.closePath();
+  ctx.fill();
+}
+
+/** An integral-curve glyph for the legend. */
+export function drawCurveGlyph(ctx, x, y) {
+  ctx.beginPath();
+  ctx.moveTo(x - 9, y + 6);
+  ctx.bezierCurveTo(x - 9, y - 8, x + 4, y - 6, x + 9, y - 2);
+  ctx.lineWidth = 1.4;
+  ctx.strokeStyle = CURVE_COLOUR;
+  ctx.stroke();
+  ctx.beginPath();
+  ctx.arc(x - 9, y + 6, 2, 0, 2 * Math.PI);
+  ctx.fillStyle = CURVE_COLOUR;
+  ctx.fill();
 }
 
 /** Draws a legend glyph on a small canvas (CSS size `size`×`size` px). */

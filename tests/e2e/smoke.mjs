@@ -1,209 +1,410 @@
-// End-to-end smoke test of the page as users load it: the RELEASE wasm package in www/pkg
+// End-to-end tests of the main page as users load it: the RELEASE wasm package in www/pkg
 // (`make build-wasm`), served by python3's http.server, driven in Debian's Chromium.
-// Fails (exit 1) on any console error or warning, any page error, a blank canvas, or a preset
-// switch that does not change the picture. Screenshots go to test-results/.
+// Checks: no console error or warning; high-DPI canvas; dragging a robot bends its predicted
+// path (pixels and scenario); undo/redo; presets; parameters; keyboard; the URL fragment
+// round trip; bad fragments; scenario names as text; exports (JSON, CSV, PNG) and import.
+// Prints two figures (not timed assertions): the time to recompute example 4's predicted
+// paths, and the frame rate while dragging. Screenshots go to test-results/, and the
+// README's picture to docs/playground.png.
 //
 // Run: make test-e2e   (or: node tests/e2e/smoke.mjs after make build-wasm)
 
-import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync } from 'node:fs';
-import { createServer } from 'node:net';
-import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { chromium } from 'playwright-core';
+import { readFileSync, statSync } from 'node:fs';
+import {
+  RESULTS, ROOT, canvasStats, changedFraction, check, checkQuiet, frames, join, run, scenarioOf,
+  waitLoaded,
+} from './lib.mjs';
 
-const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const WWW = join(ROOT, 'www');
-const RESULTS = join(ROOT, 'test-results');
-const CHROMIUM = '/usr/bin/chromium';
-const CHROMIUM_ARGS = [
-  '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync',
-];
 const VIEWPORT = { width: 1280, height: 800 };
 /** High-DPI on purpose: the canvas must size its backing store by devicePixelRatio. */
 const DEVICE_SCALE_FACTOR = 2;
-const SERVER_START_TIMEOUT_MS = 10_000;
-const PAGE_TIMEOUT_MS = 20_000;
-/** A drawn run has at least this many coloured (robot trail) device pixels. */
-const MIN_COLOURED_PIXELS = 2_000;
-/** A pixel is "coloured" when its channels spread by more than this (greys spread ~0). */
-const COLOURED_SPREAD = 60;
-/** Two different presets differ in at least this fraction of device pixels. */
-const MIN_CHANGED_FRACTION = 0.01;
+const BENCH_PRESET = 'example4-obstacle-formation';
 const SECOND_PRESET = 'example3-circle-swap';
+/** Predictions timed for the benchmark (after WARMUP untimed ones). */
+const BENCH_RUNS = 30;
+const WARMUP = 5;
+/** Mouse moves in the timed drag. */
+const DRAG_MOVES = 60;
+/** A drawn scene has at least this many coloured device pixels. */
+const MIN_COLOURED_PIXELS = 2_000;
+/** A real change of the picture touches at least this fraction of 8×8 blocks. */
+const MIN_CHANGED_FRACTION = 0.002;
+const PG = 'dvf-playground';
+/** The wasm package's budget before compression (bytes). */
+const MAX_WASM_BYTES = 250_000;
 
-const failures = [];
-const check = (ok, message) => {
-  if (ok) console.log(`ok   ${message}`);
-  else {
-    console.log(`FAIL ${message}`);
-    failures.push(message);
-  }
-};
+/** A locator inside the playground's shadow root (Playwright's CSS pierces open shadow roots). */
+const part = (page, id) => page.locator(`${PG} [data-id="${id}"]`);
 
-/** A free TCP port on 127.0.0.1. */
-function freePort() {
-  return new Promise((resolve, reject) => {
-    const srv = createServer();
-    srv.unref();
-    srv.on('error', reject);
-    srv.listen(0, '127.0.0.1', () => {
-      const { port } = srv.address();
-      srv.close(() => resolve(port));
-    });
-  });
-}
+await run(async ({ base, newPage }) => {
+  const wasmBytes = statSync(join(ROOT, 'www', 'pkg', 'dvf_bg.wasm')).size;
+  console.log(`SIZE www/pkg/dvf_bg.wasm: ${wasmBytes} bytes`);
+  check(wasmBytes <= MAX_WASM_BYTES, `the release wasm package is at most ${MAX_WASM_BYTES} bytes (${wasmBytes})`);
+  const page = await newPage({ viewport: VIEWPORT, deviceScaleFactor: DEVICE_SCALE_FACTOR });
+  await page.goto(`${base}/`);
+  await waitLoaded(page);
+  await page.waitForSelector('body[data-ready]');
+  const defaultName = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.defaultPreset()));
+  check(await part(page, 'preset').inputValue() === defaultName, `the page opens on the default preset (${defaultName})`);
+  await page.screenshot({ path: join(RESULTS, 'main-default.png') });
 
-/** Starts python3's http.server on www/ and resolves once it answers. */
-async function startServer(port) {
-  const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', WWW], {
-    stdio: ['ignore', 'ignore', 'pipe'],
-  });
-  let stderr = '';
-  server.stderr.on('data', (d) => { stderr += d; });
-  const deadline = Date.now() + SERVER_START_TIMEOUT_MS;
-  while (Date.now() < deadline) {
-    if (server.exitCode !== null) throw new Error(`http.server exited: ${stderr}`);
-    try {
-      const res = await fetch(`http://127.0.0.1:${port}/index.html`);
-      if (res.ok) return server;
-    } catch {
-      // not listening yet
-    }
-    await new Promise((r) => setTimeout(r, 100));
-  }
-  server.kill();
-  throw new Error(`http.server did not answer within ${SERVER_START_TIMEOUT_MS} ms`);
-}
+  const firstFrame = await page.evaluate((sel) => {
+    const nav = performance.getEntriesByType('navigation')[0];
+    return { frame: document.querySelector(sel).stats.firstFrameMs, loaded: nav.domContentLoadedEventEnd };
+  }, PG);
+  console.log(`BENCH first frame ${firstFrame.frame.toFixed(0)} ms after navigation started (DOMContentLoaded at ${firstFrame.loaded.toFixed(0)} ms)`);
+  const a = await canvasStats(page);
+  check(a.dpr === DEVICE_SCALE_FACTOR && Math.abs(a.width - a.cssWidth * a.dpr) <= 1,
+    `canvas backing store follows devicePixelRatio (${a.width} px for ${a.cssWidth} CSS px at ${a.dpr}×)`);
+  check(a.coloured >= MIN_COLOURED_PIXELS, `the scene is drawn (${a.coloured} coloured pixels)`);
+  check(await part(page, 'message').isHidden(), 'no message shown');
+  const clock = await part(page, 'clock').textContent();
+  check(clock.startsWith('t = 0.00 s / 25.00 s'), `the time is shown ("${clock}")`);
+  const legend = await page.locator(`${PG} [data-id="legend"] li`).count();
+  check(legend >= 10, `the legend explains ${legend} marks`);
 
-/** Pixel statistics of the main canvas, computed in the page on its backing store. */
-function canvasStats(page) {
-  return page.evaluate((spread) => {
-    const c = document.getElementById('view');
-    // Read through a copy, so the page's own context never reads back (Chromium warns when a
-    // context without willReadFrequently is read repeatedly).
-    const copy = document.createElement('canvas');
-    copy.width = c.width;
-    copy.height = c.height;
-    const cc = copy.getContext('2d', { willReadFrequently: true });
-    cc.drawImage(c, 0, 0);
-    const { data } = cc.getImageData(0, 0, c.width, c.height);
-    let coloured = 0;
-    const bg = [data[0], data[1], data[2]];
-    let nonBackground = 0;
-    // Down-sampled copy for comparing two pictures: the mean of each 8×8 block's red+green+blue.
-    const block = 8;
-    const bw = Math.ceil(c.width / block);
-    const bh = Math.ceil(c.height / block);
-    const blocks = new Array(bw * bh).fill(0);
-    for (let i = 0; i < data.length; i += 4) {
-      const r = data[i], g = data[i + 1], b = data[i + 2];
-      if (Math.max(r, g, b) - Math.min(r, g, b) > spread) coloured++;
-      if (r !== bg[0] || g !== bg[1] || b !== bg[2]) nonBackground++;
-      const p = i / 4;
-      blocks[Math.floor(p / c.width / block) * bw + Math.floor((p % c.width) / block)] += r + g + b;
-    }
-    return {
-      width: c.width,
-      height: c.height,
-      cssWidth: c.getBoundingClientRect().width,
-      dpr: window.devicePixelRatio,
-      coloured,
-      nonBackground,
-      blocks,
+  // --- Benchmark: predicted paths of the ten-robot example (printed, not asserted). ---
+  // Timed as a batch: the browser's clock is coarse (0.1 ms or worse) next to one prediction.
+  const bench = await page.evaluate(async ([name, runs, warmup]) => {
+    const { Playground } = await import('./pkg/dvf.js');
+    const pg = Playground.fromPreset(name);
+    for (let k = 0; k < warmup; k++) pg.predict();
+    let t0 = performance.now();
+    for (let k = 0; k < runs; k++) pg.predict();
+    const predict = (performance.now() - t0) / runs;
+    t0 = performance.now();
+    for (let k = 0; k < runs; k++) pg.moveRobot(0, -60 + (k % 5) * 0.3, -40, 0);
+    const edit = (performance.now() - t0) / runs;
+    const samples = pg.predictedSamples;
+    const end = pg.predictedTimes()[samples - 1];
+    // The worst case: tolerances no robot meets, so the prediction runs the whole 25 s.
+    const s = pg.scenario();
+    s.params.tol_position = 1e-12;
+    s.params.tol_heading = 1e-12;
+    pg.edit(s);
+    t0 = performance.now();
+    for (let k = 0; k < runs; k++) pg.predict();
+    const full = (performance.now() - t0) / runs;
+    const fullEnd = pg.predictedTimes()[pg.predictedSamples - 1];
+    pg.free();
+    return { predict, edit, samples, end, full, fullEnd };
+  }, [BENCH_PRESET, BENCH_RUNS, WARMUP]);
+  console.log(`BENCH predicted paths of ${BENCH_PRESET} (10 robots, dt 0.01 s, to t = ${bench.end.toFixed(2)} s when all have converged): ${bench.predict.toFixed(2)} ms per prediction (mean of ${BENCH_RUNS}); a drag edit (move + checks + prediction) ${bench.edit.toFixed(2)} ms; ${bench.samples} samples per robot`);
+  console.log(`BENCH the same without stopping early (to t = ${bench.fullEnd.toFixed(2)} s): ${bench.full.toFixed(2)} ms per prediction`);
+  check(bench.samples >= 2 && bench.fullEnd === 25, 'the benchmark predicted a path, and the whole run when asked to');
+
+  // --- Drag robot 1 at t = 0: its start moves and its predicted path bends. ---
+  const before = await scenarioOf(page);
+  const predictedBefore = await page.evaluate((sel) => Array.from(document.querySelector(sel).cache.predicted), PG);
+  const [sx, sy] = before.robots[0].start;
+  const from = await page.evaluate(([sel, x, y]) => document.querySelector(sel).worldToScreen(x, y), [PG, sx, sy]);
+  const scroll = await page.evaluate(() => [window.scrollX, window.scrollY]);
+  const fx = from.x - scroll[0];
+  const fy = from.y - scroll[1];
+  await page.mouse.move(fx, fy);
+  await page.mouse.down();
+  // The page's own frame clock during the drag: every animation frame the browser produced.
+  await page.evaluate((sel) => {
+    window.dragFrames = [];
+    window.dragging = true;
+    const tick = (t) => {
+      if (!window.dragging) return;
+      window.dragFrames.push(t);
+      requestAnimationFrame(tick);
     };
-  }, COLOURED_SPREAD);
-}
+    requestAnimationFrame(tick);
+    const el = document.querySelector(sel);
+    el.stats.maxFrameWorkMs = 0;
+    window.redraws0 = el.stats.frames;
+  }, PG);
+  for (let k = 1; k <= DRAG_MOVES; k++) await page.mouse.move(fx + k * 1.5, fy - k * 1.2);
+  await frames(page);
+  const drag = await page.evaluate((sel) => {
+    window.dragging = false;
+    const t = window.dragFrames;
+    let worst = 0;
+    for (let k = 1; k < t.length; k++) worst = Math.max(worst, t[k] - t[k - 1]);
+    const el = document.querySelector(sel);
+    return { frames: t.length, span: (t[t.length - 1] - t[0]) / 1000, worst, redraws: el.stats.frames - window.redraws0, maxWork: el.stats.maxFrameWorkMs, edit: el.stats.lastEditMs };
+  }, PG);
+  await page.mouse.up();
+  await frames(page);
+  const fps = (drag.frames - 1) / drag.span;
+  console.log(`BENCH drag of a robot in ${BENCH_PRESET}: the page ran ${fps.toFixed(1)} frames/s (${drag.frames} frames in ${drag.span.toFixed(2)} s, longest gap ${drag.worst.toFixed(1)} ms); the playground redrew ${drag.redraws} times for ${DRAG_MOVES} pointer moves; its slowest frame (edit + prediction + field + drawing) took ${drag.maxWork.toFixed(1)} ms`);
+  check(drag.redraws >= DRAG_MOVES / 2, 'the playground redraws while the pointer moves');
+  await page.screenshot({ path: join(RESULTS, 'main-after-drag.png') });
+  const after = await scenarioOf(page);
+  const b = await canvasStats(page);
+  const predictedAfter = await page.evaluate((sel) => Array.from(document.querySelector(sel).cache.predicted), PG);
+  // The pointer went right and up on screen: right and up in the world (y up).
+  check(after.robots[0].start[0] > sx && after.robots[0].start[1] > sy,
+    `dragging robot 1 moves its start in scenario() (${before.robots[0].start.slice(0, 2).map((v) => v.toFixed(1))} → ${after.robots[0].start.slice(0, 2).map((v) => v.toFixed(1))})`);
+  check(JSON.stringify(after.robots.slice(1)) === JSON.stringify(before.robots.slice(1)), 'the other robots are unchanged');
+  const n = before.robots.length;
+  const samples = predictedBefore.length / n / 3;
+  const lastOf = (arr, i) => arr.slice((i * samples + samples - 10) * 3, (i * samples + samples - 10) * 3 + 2);
+  check(predictedAfter[0] !== predictedBefore[0] && JSON.stringify(lastOf(predictedAfter, 0)) !== JSON.stringify(lastOf(predictedBefore, 0)),
+    'robot 1\'s predicted path starts at the new place and runs differently');
+  const changed = changedFraction(a, b);
+  check(changed >= MIN_CHANGED_FRACTION, `the drag changes the picture (${(changed * 100).toFixed(2)} % of blocks)`);
+  const hash = await page.evaluate(() => location.hash);
+  check(hash.startsWith('#s='), `the address holds the edited scenario (${hash.length} characters)`);
 
-async function main() {
-  const wasm = join(WWW, 'pkg', 'dvf_bg.wasm');
-  if (!existsSync(wasm)) throw new Error(`${wasm} is missing: run make build-wasm first`);
-  mkdirSync(RESULTS, { recursive: true });
+  // --- Undo and redo. ---
+  await part(page, 'undo').click();
+  check(JSON.stringify((await scenarioOf(page)).robots[0]) === JSON.stringify(before.robots[0]), 'undo brings the start back');
+  await part(page, 'redo').click();
+  check(JSON.stringify((await scenarioOf(page)).robots[0]) === JSON.stringify(after.robots[0]), 'redo applies the drag again');
 
-  const port = await freePort();
-  const server = await startServer(port);
-  let browser;
-  try {
-    browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
-    const context = await browser.newContext({ viewport: VIEWPORT, deviceScaleFactor: DEVICE_SCALE_FACTOR });
-    const page = await context.newPage();
-    page.setDefaultTimeout(PAGE_TIMEOUT_MS);
-    const messages = [];
-    page.on('console', (m) => {
-      if (m.type() === 'error' || m.type() === 'warning') messages.push(`console.${m.type()}: ${m.text()}`);
-    });
-    page.on('pageerror', (e) => messages.push(`page error: ${e.message}`));
-    page.on('requestfailed', (r) => messages.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
-    page.on('response', (r) => {
-      if (r.status() >= 400) messages.push(`HTTP ${r.status()}: ${r.url()}`);
-    });
+  // --- Handles: a selected robot's heading handle turns it; an obstacle's handles resize it. ---
+  const screenOf = (x, y) => page.evaluate(([sel, wx, wy]) => {
+    const p = document.querySelector(sel).worldToScreen(wx, wy);
+    return [p.x - window.scrollX, p.y - window.scrollY];
+  }, [PG, x, y]);
+  const dragFromTo = async ([x0, y0], [x1, y1]) => {
+    await page.mouse.move(x0, y0);
+    await page.mouse.down();
+    for (let k = 1; k <= 8; k++) await page.mouse.move(x0 + ((x1 - x0) * k) / 8, y0 + ((y1 - y0) * k) / 8);
+    await page.mouse.up();
+    await frames(page);
+  };
+  const r2 = (await scenarioOf(page)).robots[1].start;
+  const [bx, by] = await screenOf(r2[0], r2[1]);
+  await page.mouse.click(bx, by);
+  await frames(page);
+  await page.screenshot({ path: join(RESULTS, 'main-robot-selected.png') });
+  // The handle sits 30 CSS px ahead of the robot (heading 0: to the right); drag it upwards.
+  await dragFromTo([bx + 30, by], [bx, by - 40]);
+  const turned = (await scenarioOf(page)).robots[1].start[2];
+  check(Math.abs(turned - Math.PI / 2) < 0.2, `the heading handle turns robot 2 to ${turned.toFixed(2)} rad (≈ π/2)`);
+  const ob = (await scenarioOf(page)).obstacles[0];
+  const [ox, oy] = await screenOf(ob.center[0], ob.center[1]);
+  await page.mouse.click(ox, oy);
+  await frames(page);
+  const [ex] = await screenOf(ob.center[0] + ob.radius, ob.center[1]);
+  await dragFromTo([ex, oy], [ex + 15, oy]);
+  const [ix] = await screenOf(ob.center[0] + ob.influence, ob.center[1]);
+  await dragFromTo([ix, oy], [ix + 30, oy]);
+  const resized = (await scenarioOf(page)).obstacles[0];
+  check(resized.radius > ob.radius + 1 && resized.influence > ob.influence + 2 && resized.center[0] === ob.center[0],
+    `the obstacle's handles resize r_o ${ob.radius} → ${resized.radius.toFixed(2)} and R_o ${ob.influence} → ${resized.influence.toFixed(2)}`);
+  await page.screenshot({ path: join(RESULTS, 'main-obstacle-resized.png') });
 
-    await page.goto(`http://127.0.0.1:${port}/`);
-    await page.waitForSelector('body[data-preset]');
-    const first = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.defaultPreset()));
-    const shown = await page.getAttribute('body', 'data-preset');
-    check(shown === first, `the page opens on the default preset (${shown})`);
-    // Two animation frames: the draw requested on load has happened.
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-    await page.screenshot({ path: join(RESULTS, 'default-preset.png') });
+  // --- Pan and zoom: the wheel zooms about the pointer, dragging the background pans. ---
+  const camera0 = await page.evaluate((sel) => ({ ...document.querySelector(sel).camera }), PG);
+  const [cx, cy] = await screenOf(-120, -70);
+  await page.mouse.move(cx, cy);
+  await page.mouse.wheel(0, -300);
+  await frames(page);
+  const camera1 = await page.evaluate((sel) => ({ ...document.querySelector(sel).camera }), PG);
+  await dragFromTo([cx, cy], [cx + 80, cy]);
+  const camera2 = await page.evaluate((sel) => ({ ...document.querySelector(sel).camera }), PG);
+  check(camera1.scale > camera0.scale && camera2.cx < camera1.cx && JSON.stringify(await scenarioOf(page)).length > 0,
+    `the wheel zooms (${camera0.scale.toFixed(2)} → ${camera1.scale.toFixed(2)} px/m) and dragging the background pans`);
+  await page.screenshot({ path: join(RESULTS, 'main-zoomed.png') });
+  await page.keyboard.press('f');
+  for (let k = 0; k < 3; k++) await part(page, 'undo').click();
+  check(JSON.stringify(await scenarioOf(page)) === JSON.stringify(after), 'three undos take back the resizes and the turn');
 
-    const a = await canvasStats(page);
-    check(a.dpr === DEVICE_SCALE_FACTOR && Math.abs(a.width - a.cssWidth * a.dpr) <= 1,
-      `canvas backing store follows devicePixelRatio (${a.width} px for ${a.cssWidth} CSS px at ${a.dpr}×)`);
-    check(a.coloured >= MIN_COLOURED_PIXELS, `default preset ${first} draws trails (${a.coloured} coloured pixels)`);
-    check(a.nonBackground > a.width * a.height * 0.05, `canvas is not blank (${a.nonBackground} non-background pixels)`);
-    const name = await page.textContent('#scenario-name');
-    check(name.length > 0, `scenario name shown: "${name}"`);
-    const rows = await page.locator('#robots tr').count();
-    check(rows > 0, `report lists ${rows} robots`);
-    check(await page.isHidden('#error'), 'no error banner');
+  // --- The URL round trip: the copied address opens the same scene in a new page. ---
+  const url = await page.evaluate(() => location.href);
+  const copy = await newPage({ viewport: VIEWPORT });
+  await copy.goto(url);
+  await waitLoaded(copy);
+  await copy.waitForSelector('body[data-ready]');
+  const reopened = await scenarioOf(copy);
+  check(JSON.stringify(reopened) === JSON.stringify(await scenarioOf(page)), 'a copied link reopens exactly the same scenario');
+  checkQuiet(copy, 'reopened page');
 
-    // Scrub to the start: robots move to their start poses, the picture changes.
-    await page.locator('#time').fill('0');
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-    const label = await page.textContent('#time-label');
-    check(label.startsWith('t = 0.00 s'), `time slider scrubs to the start ("${label}")`);
-    await page.screenshot({ path: join(RESULTS, 'default-preset-t0.png') });
-
-    await page.selectOption('#preset', SECOND_PRESET);
-    await page.waitForSelector(`body[data-preset="${SECOND_PRESET}"]`);
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-    await page.screenshot({ path: join(RESULTS, 'second-preset.png') });
-    const b = await canvasStats(page);
-    const changed = a.blocks.filter((v, i) => Math.abs(v - b.blocks[i]) > 8 * 8 * 3 * 4).length / a.blocks.length;
-    check(b.coloured >= MIN_COLOURED_PIXELS, `${SECOND_PRESET} draws trails (${b.coloured} coloured pixels)`);
-    check(changed >= MIN_CHANGED_FRACTION, `switching preset changes the picture (${(changed * 100).toFixed(1)} % of blocks)`);
-
-    // Every preset runs and draws; one screenshot each, for looking at.
-    const names = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.presets().map((p) => p.name)));
-    for (const preset of names) {
-      await page.selectOption('#preset', preset);
-      await page.waitForSelector(`body[data-preset="${preset}"]`);
-      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-      await page.screenshot({ path: join(RESULTS, `preset-${preset}.png`) });
-      const s = await canvasStats(page);
-      check(s.coloured >= MIN_COLOURED_PIXELS && (await page.isHidden('#error')),
-        `preset ${preset} draws without error (${s.coloured} coloured pixels)`);
-    }
-
-    check(messages.length === 0, `no console errors or warnings, no page errors${messages.length ? `:\n  ${messages.join('\n  ')}` : ''}`);
-  } finally {
-    if (browser) await browser.close();
-    server.kill();
+  // --- Bad fragments: a message, the default scene, no console error. ---
+  const defaultScenario = await page.evaluate((name) => import('./pkg/dvf.js').then((m) => m.presetScenario(name)), defaultName);
+  const badLinks = [
+    ['truncated JSON', `#s=${encodeURIComponent('{"robots":[{"start":[0,0,0]')}`, 'not valid JSON'],
+    ['bad percent-encoding', '#s=%E0%A4%A', 'percent-encoded'],
+    ['a negative radius', `#s=${encodeURIComponent('{"robots":[{"start":[0,0,0],"goal":[5,5,0]}],"obstacles":[{"center":[9,9],"radius":-1,"influence":2}]}')}`, 'obstacles[0].radius'],
+    ['an oversized fragment', `#s=${'x'.repeat(70 * 1024)}`, 'at most'],
+    ['an unknown preset', '#no-such-preset', 'no preset named'],
+  ];
+  for (const [what, fragment, expected] of badLinks) {
+    const bad = await newPage({ viewport: VIEWPORT });
+    await bad.goto(`${base}/${fragment}`);
+    await waitLoaded(bad);
+    await bad.waitForSelector('body[data-ready]');
+    const message = await part(bad, 'message').textContent();
+    const shown = await scenarioOf(bad);
+    check(message.includes(expected) && JSON.stringify(shown) === JSON.stringify(defaultScenario),
+      `a link with ${what} shows "${message.slice(0, 90)}…" and the default scene`);
+    if (what === 'truncated JSON') await bad.screenshot({ path: join(RESULTS, 'main-bad-link.png') });
+    await bad.context().close();
   }
-}
 
-main()
-  .catch((e) => {
-    failures.push(e.stack ?? String(e));
-    console.log(`FAIL ${e.stack ?? e}`);
-  })
-  .finally(() => {
-    if (failures.length) {
-      console.log(`\n${failures.length} failure(s)`);
-      process.exitCode = 1;
-    } else {
-      console.log('\nall checks passed');
+  // --- A scenario name is text, never HTML. ---
+  const hostile = '<img src=x onerror="window.pwned=1">Robots & <b>bold</b>';
+  const xss = await newPage({ viewport: VIEWPORT });
+  await xss.goto(`${base}/#s=${encodeURIComponent(JSON.stringify({ name: hostile, robots: [{ start: [0, 0, 0], goal: [10, 5, 1] }] }))}`);
+  await waitLoaded(xss);
+  await xss.waitForSelector('body[data-ready]');
+  const title = await part(xss, 'title').textContent();
+  const imgs = await xss.evaluate((sel) => document.querySelector(sel).shadowRoot.querySelectorAll('img, b').length, PG);
+  check(title === hostile && imgs === 0 && !(await xss.evaluate(() => window.pwned)), 'a scenario name from a link is shown as text');
+  checkQuiet(xss, 'page with a hostile name');
+  await xss.context().close();
+
+  // --- Presets: the menu switches the scene; every preset draws. ---
+  await part(page, 'preset').selectOption(SECOND_PRESET);
+  await frames(page);
+  const c = await canvasStats(page);
+  check((await scenarioOf(page)).name.includes('antipodal'), `the preset menu loads ${SECOND_PRESET}`);
+  check(changedFraction(b, c) > 0.01, `switching preset changes the picture (${(changedFraction(b, c) * 100).toFixed(1)} % of blocks)`);
+  const names = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.presets().map((p) => p.name)));
+  for (const preset of names) {
+    await part(page, 'preset').selectOption(preset);
+    await frames(page);
+    await page.screenshot({ path: join(RESULTS, `preset-${preset}.png`) });
+    const s = await canvasStats(page);
+    check(s.coloured >= MIN_COLOURED_PIXELS && (await part(page, 'message').isHidden()), `preset ${preset} draws without a message (${s.coloured} coloured pixels)`);
+  }
+
+  // --- Parameters: a bad value shows the core's message and keeps the old one. ---
+  const kv = page.locator(`${PG} input[name="k_v"]`);
+  await kv.fill('-1');
+  await kv.press('Enter');
+  await kv.blur();
+  const paramError = await page.locator(`${PG} .param-error`).textContent();
+  check(paramError.startsWith('params.k_v: must be positive') && (await scenarioOf(page)).params.k_v === 1 && (await kv.inputValue()) === '1',
+    `k_v = -1 is refused with "${paramError}" and the field goes back to 1`);
+  await kv.fill('1.5');
+  await kv.press('Enter');
+  check((await scenarioOf(page)).params.k_v === 1.5 && (await page.locator(`${PG} .param-error`).isHidden()), 'k_v = 1.5 applies');
+  const vmax = page.locator(`${PG} input[name="v_max"]`);
+  await vmax.fill('3');
+  await vmax.press('Enter');
+  check((await scenarioOf(page)).params.v_max === 3, 'the speed saturation v_max can be set');
+  await vmax.fill('');
+  await vmax.press('Enter');
+  check((await scenarioOf(page)).params.v_max === null, 'an empty v_max removes the saturation');
+
+  // --- Keyboard: the canvas takes focus and plays, steps and resets from keys. ---
+  await part(page, 'preset').selectOption(SECOND_PRESET);
+  await part(page, 'canvas').focus();
+  await page.keyboard.press('s');
+  const afterStep = await page.evaluate((sel) => document.querySelector(sel).cache.time, PG);
+  await page.keyboard.press(' ');
+  await page.waitForFunction((sel) => document.querySelector(sel).cache.time > 1, PG);
+  await page.keyboard.press(' ');
+  await frames(page);
+  await page.screenshot({ path: join(RESULTS, 'main-playing.png') });
+  const playedTo = await page.evaluate((sel) => document.querySelector(sel).cache.time, PG);
+  const trail = await page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    const view = el.trailsView(); // the ring, read in place in wasm memory
+    const cap = el.limits.trailCapacity;
+    const newest = (el.pg.trailHead - 1 + cap) % cap;
+    return { len: el.pg.trailLength(0), same: view[newest * 3] === el.cache.poses[0] && view[newest * 3 + 1] === el.cache.poses[1] };
+  }, PG);
+  check(trail.len > 10 && trail.same, `playing fills robot 1's trail (${trail.len} samples), its newest sample the pose now`);
+  await page.keyboard.press('r');
+  const resetTo = await page.evaluate((sel) => document.querySelector(sel).cache.time, PG);
+  check(afterStep > 0 && playedTo > 1 && resetTo === 0, `keys S, Space and R step (t = ${afterStep}), play (t = ${playedTo.toFixed(2)}) and reset`);
+  const presetStart = (await page.evaluate((n) => import('./pkg/dvf.js').then((m) => m.presetScenario(n)), SECOND_PRESET)).robots[0].start;
+  await page.keyboard.press(']');
+  await page.keyboard.press('ArrowUp');
+  const moved = await scenarioOf(page);
+  check(moved.robots[0].start[1] > presetStart[1] && moved.robots[0].start[0] === presetStart[0],
+    `] selects robot 1 and ArrowUp moves its start up (${presetStart[1].toFixed(2)} → ${moved.robots[0].start[1].toFixed(2)})`);
+  await page.keyboard.press('a');
+  check((await scenarioOf(page)).robots.length === moved.robots.length + 1, 'key A adds a robot');
+  await page.keyboard.press('Delete');
+  check((await scenarioOf(page)).robots.length === moved.robots.length, 'Delete removes the selected robot');
+  const focusOutline = await part(page, 'canvas').evaluate((el) => getComputedStyle(el).outlineStyle);
+  check(focusOutline !== 'none', `the focused canvas shows a focus outline (${focusOutline})`);
+
+  // --- Exports: scenario JSON, trajectories CSV, canvas PNG. ---
+  await part(page, 'preset').selectOption(BENCH_PRESET);
+  const current = await scenarioOf(page);
+  const [jsonDownload] = await Promise.all([page.waitForEvent('download'), part(page, 'export-json').click()]);
+  const jsonText = readFileSync(await jsonDownload.path(), 'utf8');
+  const checked = await page.evaluate((text) => import('./pkg/dvf.js').then((m) => {
+    try {
+      return { ok: true, s: m.checkScenario(text) };
+    } catch (e) {
+      return { ok: false, error: e.message };
     }
-  });
+  }), jsonText);
+  check(checked.ok && JSON.stringify(checked.s) === JSON.stringify(current),
+    `the exported JSON (${jsonDownload.suggestedFilename()}) passes the crate's checks and is the scenario shown`);
+  const [csvDownload] = await Promise.all([page.waitForEvent('download'), part(page, 'export-csv').click()]);
+  const csv = readFileSync(await csvDownload.path(), 'utf8').trim().split('\n');
+  const expectedRows = await page.evaluate((s) => import('./pkg/dvf.js').then((m) => {
+    const r = new m.Run(s);
+    const rows = r.robotCount * r.sampleCount;
+    r.free();
+    return rows;
+  }), current);
+  const cols = csv.slice(1).every((line) => line.split(',').length === 7 && line.split(',').every((v) => Number.isFinite(Number(v))));
+  check(csv[0] === 'robot,t,x,y,theta,v,omega' && csv.length - 1 === expectedRows && cols,
+    `the CSV has the header and ${csv.length - 1} rows of 7 numbers (expected ${expectedRows})`);
+  const [pngDownload] = await Promise.all([page.waitForEvent('download'), part(page, 'export-png').click()]);
+  const png = readFileSync(await pngDownload.path());
+  const signature = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a].every((v, i) => png[i] === v);
+  const pngWidth = png.readUInt32BE(16);
+  check(signature && pngWidth === a.width, `the PNG has the PNG signature and the canvas' ${pngWidth} device pixels of width (${png.length} bytes)`);
+
+  // --- Import: a bad file shows a message and keeps the scene; a good one loads. ---
+  const shownBefore = await scenarioOf(page);
+  await part(page, 'import-file').setInputFiles({ name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from('{"robots": [{"start": [0, 0, 0], "goal": [1, 2]}]}') });
+  await page.waitForFunction((sel) => !document.querySelector(sel).shadowRoot.querySelector('[data-id="message"]').hidden, PG);
+  const importMessage = await part(page, 'message').textContent();
+  check(importMessage.includes('robots[0].goal') && JSON.stringify(await scenarioOf(page)) === JSON.stringify(shownBefore),
+    `a bad import shows "${importMessage}" and keeps the scene`);
+  await part(page, 'import-file').setInputFiles({ name: 'two.json', mimeType: 'application/json', buffer: Buffer.from(readFileSync(join(ROOT, 'www', 'scenarios', 'two-robot-swap.json'))) });
+  await page.waitForFunction((sel) => document.querySelector(sel).scenario().robots.length === 2, PG);
+  check((await part(page, 'message').isHidden()), 'a good import loads the file and clears the message');
+
+  // --- The canvas follows the window, and two fingers pinch-zoom (real touch input). ---
+  await page.setViewportSize({ width: 900, height: 700 });
+  await page.waitForFunction(([sel, w]) => {
+    const c = document.querySelector(sel).shadowRoot.querySelector('[data-id="canvas"]');
+    return c.width !== w && Math.abs(c.width - c.clientWidth * devicePixelRatio) <= 1;
+  }, [PG, a.width]);
+  const small = await canvasStats(page);
+  check(small.width < a.width, `the canvas follows a smaller window (${a.width} → ${small.width} device px wide)`);
+  await page.screenshot({ path: join(RESULTS, 'main-900x700.png') });
+  await page.setViewportSize(VIEWPORT);
+  const touch = await newPage({ viewport: VIEWPORT, hasTouch: true });
+  await touch.goto(`${base}/`);
+  await waitLoaded(touch);
+  const cdp = await touch.context().newCDPSession(touch);
+  const box = await touch.locator(`${PG} [data-id="canvas"]`).boundingBox();
+  const mx = box.x + box.width * 0.3;
+  const my = box.y + box.height * 0.85;
+  const scale0 = await touch.evaluate((sel) => { const el = document.querySelector(sel); el.view(); return el.camera.scale; }, PG);
+  const fingers = (d) => [{ x: mx - d, y: my, id: 1 }, { x: mx + d, y: my, id: 2 }];
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: fingers(20) });
+  for (let d = 25; d <= 80; d += 5) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: fingers(d) });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await frames(touch);
+  const scale1 = await touch.evaluate((sel) => document.querySelector(sel).camera.scale, PG);
+  check(scale1 > scale0 * 3, `a two-finger pinch zooms in (${scale0.toFixed(2)} → ${scale1.toFixed(2)} px/m) without moving anything`);
+  const untouched = await scenarioOf(touch);
+  check(JSON.stringify(untouched) === JSON.stringify(defaultScenario), 'the pinch left the scenario alone');
+  checkQuiet(touch, 'touch page');
+  await touch.context().close();
+
+  checkQuiet(page, 'main page');
+
+  // --- The README's picture: 1280×800 at scale 1, Example 4 as the robots pass the obstacle,
+  // the field of the robot that goes round it. ---
+  const shot = await newPage({ viewport: VIEWPORT, deviceScaleFactor: 1 });
+  await shot.goto(`${base}/`);
+  await waitLoaded(shot);
+  await shot.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    el.step(70);
+    el.focusRobot = 2;
+  }, PG);
+  await frames(shot);
+  await shot.screenshot({ path: join(ROOT, 'docs', 'playground.png') });
+  await shot.screenshot({ path: join(RESULTS, 'readme-playground.png') });
+  checkQuiet(shot, 'README screenshot page');
+});

@@ -1,0 +1,854 @@
+//! The playground's live simulation: a [`Simulation`] that a person edits while it runs, with
+//! the buffers the page draws from (bounded trails, predicted paths, field samples, integral
+//! curves, error series). Pure Rust: `src/wasm.rs` only hands these buffers to JavaScript.
+//!
+//! # Editing while the clock runs
+//! - At `t = 0` every edit is an edit of the scenario: moving a robot moves its start.
+//! - At `t > 0` goals, obstacles and parameters apply at once and the robots continue from
+//!   where they are now; moving a robot moves its current pose, not its start (so
+//!   [`Live::reset`] brings back the scenario's starts). A robot added at `t > 0` appears at
+//!   its start. After an edit the heading error restarts on its principal branch (the
+//!   continued branch of [`crate::se2::continue_branch`] belongs to the path before the edit).
+//! - Every edit recomputes the predicted paths: a copy of the simulation run from the current
+//!   state to the scenario's end, so that the prediction is exactly what playing will show.
+//!
+//! # Buffers (all flat `f64`, robots in scenario order)
+//! - poses `[robots · 3]`: `x, y, θ` now.
+//! - trails `[robots · TRAIL_CAPACITY · 3]`: a ring of past `x, y, θ` per robot, written at
+//!   slot [`Live::trail_head`] (the next to write, shared by all robots); robot `i` holds its
+//!   last [`Live::trail_len`]`(i)` samples, the oldest at slot
+//!   `(head − len + TRAIL_CAPACITY) % TRAIL_CAPACITY`. The time and minimum pair distance of
+//!   each slot are in two rings of `TRAIL_CAPACITY` ([`Live::trail_times`],
+//!   [`Live::trail_min_pair`]), whose own length is [`Live::history_len`].
+//! - predicted `[robots · samples · 3]`, with [`Live::predicted_times`] and
+//!   [`Live::predicted_min_pair`] `[samples]`; sample 0 is the current state.
+//! - status `[robots · 6]`: `v, ω, Π ς_i, ς_c, vo_x, vo_y` (the virtual obstacle, NaN when
+//!   none).
+//! - field grid `[nx · ny · 4]`: `x, y, Γx, Γy`, row by row from `ymin`.
+//! - integral curves `[curves · points · 2]`: `x, y`.
+//!
+//! A missing pair distance (fewer than two interacting robots) is NaN.
+
+use crate::controller::evaluate;
+use crate::error::Error;
+use crate::field::integral_curve;
+use crate::scenario::{RobotSpec, Scenario};
+use crate::se2::Pose;
+use crate::sim::Simulation;
+use glam::DVec2;
+
+/// At most this many robots in the playground: prediction costs `O(robots² · steps)` per edit.
+pub const MAX_LIVE_ROBOTS: usize = 100;
+/// At most this many steps (`duration / dt`) in a live scenario.
+pub const MAX_LIVE_STEPS: usize = 200_000;
+/// At most this much prediction work, `robots² · steps`: an edit (and a link someone shares)
+/// must not freeze the page. Example 4 (10 robots, 2,500 steps) needs 250,000.
+pub const MAX_LIVE_WORK: usize = 50_000_000;
+/// Samples kept per robot in the trail ring.
+pub const TRAIL_CAPACITY: usize = 2_048;
+/// At most this many samples per robot in a predicted path (the current state included).
+pub const PREDICTION_SAMPLES: usize = 400;
+/// Values per pose: `x, y, θ`.
+pub const POSE_STRIDE: usize = 3;
+/// Values per robot status: `v, ω, Π ς_i, ς_c, vo_x, vo_y`.
+pub const STATUS_STRIDE: usize = 6;
+/// Values per field sample: `x, y, Γx, Γy`.
+pub const FIELD_STRIDE: usize = 4;
+/// The largest field grid side.
+pub const MAX_GRID_SIDE: usize = 200;
+/// The largest number of integral curves per side (each is an RK4 run of its own).
+pub const MAX_CURVE_SIDE: usize = 40;
+/// Integration step of the integral curves (field time units) and their length.
+const CURVE_DT: f64 = 0.05;
+/// `θ̃` decays like `e^{−t}` along a curve: 8 time units leave `e^{−8} ≈ 3e-4` of it.
+const CURVE_TIME: f64 = 8.0;
+/// Points kept per integral curve.
+pub const CURVE_POINTS: usize = 81;
+
+/// A live, editable simulation and the buffers drawn from it.
+#[derive(Clone, Debug)]
+pub struct Live {
+    scenario: Scenario,
+    sim: Simulation,
+    /// Time and steps before the current `sim` started (it restarts at 0 after each edit).
+    base_time: f64,
+    base_steps: usize,
+    /// History is recorded every this many steps, so the ring spans the whole run.
+    record_every: usize,
+    poses: Vec<f64>,
+    status: Vec<f64>,
+    trails: Vec<f64>,
+    trail_lens: Vec<usize>,
+    trail_times: Vec<f64>,
+    trail_min_pair: Vec<f64>,
+    trail_head: usize,
+    history_len: usize,
+    predicted: Vec<f64>,
+    predicted_times: Vec<f64>,
+    predicted_min_pair: Vec<f64>,
+    predicted_samples: usize,
+    field: Vec<f64>,
+    curves: Vec<f64>,
+}
+
+impl Live {
+    /// A live simulation of `scenario` at `t = 0` (validated here), with its prediction.
+    ///
+    /// # Errors
+    /// The scenario's first invalid field, or more than [`MAX_LIVE_ROBOTS`] robots.
+    pub fn new(scenario: Scenario) -> Result<Self, Error> {
+        check(&scenario)?;
+        let sim = Simulation::new(&scenario);
+        let mut live = Self {
+            record_every: record_every(&scenario),
+            scenario,
+            sim,
+            base_time: 0.0,
+            base_steps: 0,
+            poses: Vec::new(),
+            status: Vec::new(),
+            trails: Vec::new(),
+            trail_lens: Vec::new(),
+            trail_times: vec![f64::NAN; TRAIL_CAPACITY],
+            trail_min_pair: vec![f64::NAN; TRAIL_CAPACITY],
+            trail_head: 0,
+            history_len: 0,
+            predicted: Vec::new(),
+            predicted_times: Vec::new(),
+            predicted_min_pair: Vec::new(),
+            predicted_samples: 0,
+            field: Vec::new(),
+            curves: Vec::new(),
+        };
+        live.reset();
+        Ok(live)
+    }
+
+    /// The scenario (starts are where [`reset`](Self::reset) puts the robots).
+    #[must_use]
+    pub fn scenario(&self) -> &Scenario {
+        &self.scenario
+    }
+
+    /// The simulation as it is now.
+    #[must_use]
+    pub fn simulation(&self) -> &Simulation {
+        &self.sim
+    }
+
+    /// Simulated time now (s).
+    #[must_use]
+    pub fn time(&self) -> f64 {
+        self.base_time + self.sim.time()
+    }
+
+    /// Steps taken since `t = 0`.
+    #[must_use]
+    pub fn steps(&self) -> usize {
+        self.base_steps + self.sim.steps()
+    }
+
+    /// Whether the clock has reached the scenario's duration.
+    #[must_use]
+    pub fn finished(&self) -> bool {
+        self.steps() >= self.scenario.steps()
+    }
+
+    /// Back to `t = 0` at the scenario's starts; clears the trails.
+    pub fn reset(&mut self) {
+        self.sim = Simulation::new(&self.scenario);
+        self.base_time = 0.0;
+        self.base_steps = 0;
+        self.record_every = record_every(&self.scenario);
+        let n = self.scenario.robots.len();
+        self.trails = vec![0.0; n * TRAIL_CAPACITY * POSE_STRIDE];
+        self.trail_lens = vec![0; n];
+        self.trail_head = 0;
+        self.history_len = 0;
+        self.record();
+        self.refresh();
+        self.predict();
+    }
+
+    /// Advances up to `n` steps, stopping at the scenario's end; returns the steps taken.
+    pub fn step(&mut self, n: usize) -> usize {
+        let left = self.scenario.steps().saturating_sub(self.steps());
+        let n = n.min(left);
+        for _ in 0..n {
+            self.sim.step();
+            if self.steps() % self.record_every == 0 || self.finished() {
+                self.record();
+            }
+        }
+        if n > 0 {
+            self.refresh();
+        }
+        n
+    }
+
+    /// Replaces the scenario (see the module doc for what happens at `t > 0`) and predicts
+    /// again.
+    ///
+    /// # Errors
+    /// The first invalid field of `scenario`, or a robot that the edit would leave inside an
+    /// obstacle; the live simulation is unchanged then.
+    pub fn edit(&mut self, scenario: Scenario) -> Result<(), Error> {
+        check(&scenario)?;
+        if self.steps() == 0 {
+            self.scenario = scenario;
+            self.reset();
+            return Ok(());
+        }
+        let now: Vec<Pose> = self.sim.robots().iter().map(|r| r.pose).collect();
+        self.resume(scenario, &now)?;
+        Ok(())
+    }
+
+    /// Moves robot `index` to `pose`: its start at `t = 0`, its current pose later.
+    ///
+    /// # Errors
+    /// An index out of range, a non-finite or too large value, or a pose inside an obstacle.
+    pub fn move_robot(&mut self, index: usize, pose: Pose) -> Result<(), Error> {
+        let count = self.scenario.robots.len();
+        if index >= count {
+            return Err(Error::RobotIndex { index, count });
+        }
+        if self.steps() == 0 {
+            let mut s = self.scenario.clone();
+            s.robots[index].start = pose.to_array();
+            return self.edit(s);
+        }
+        let mut now: Vec<Pose> = self.sim.robots().iter().map(|r| r.pose).collect();
+        now[index] = pose;
+        self.resume(self.scenario.clone(), &now)
+    }
+
+    /// Restarts the simulation from `now` (poses of the first robots) under `scenario`,
+    /// keeping the clock and the trails of the robots that remain.
+    fn resume(&mut self, scenario: Scenario, now: &[Pose]) -> Result<(), Error> {
+        let mut from = scenario.clone();
+        for (i, (r, p)) in from.robots.iter_mut().zip(now).enumerate() {
+            let field = format!("robots[{i}]");
+            for (k, v) in p.to_array().into_iter().enumerate() {
+                if !v.is_finite() || v.abs() > crate::scenario::MAX_MAGNITUDE {
+                    return Err(Error::Invalid {
+                        field: format!("{field}.pose[{k}]"),
+                        message: format!(
+                            "must be a finite number of magnitude at most {:e}, not {v}",
+                            crate::scenario::MAX_MAGNITUDE
+                        ),
+                    });
+                }
+            }
+            for (j, o) in from.obstacles.iter().enumerate() {
+                if o.clearance(p.p) <= 0.0 {
+                    return Err(Error::Invalid {
+                        field,
+                        message: format!(
+                            "would be inside obstacles[{j}] (radius {}) where it is now, at t = {:.2} s",
+                            o.radius,
+                            self.time()
+                        ),
+                    });
+                }
+            }
+            *r = RobotSpec {
+                start: p.to_array(),
+                goal: r.goal,
+            };
+        }
+        let time = self.time();
+        let steps = self.steps();
+        let old_n = self.scenario.robots.len();
+        let n = scenario.robots.len();
+        self.sim = Simulation::new(&from);
+        self.base_time = time;
+        self.base_steps = steps;
+        self.scenario = scenario;
+        if n != old_n {
+            // Robots keep their index; removed ones drop off the end, added ones start empty.
+            self.trails.resize(n * TRAIL_CAPACITY * POSE_STRIDE, 0.0);
+            self.trail_lens.resize(n, 0);
+        }
+        self.record_every = record_every(&self.scenario);
+        self.refresh();
+        self.predict();
+        Ok(())
+    }
+
+    /// Writes the current state into the history rings.
+    fn record(&mut self) {
+        let h = self.trail_head;
+        for (i, r) in self.sim.robots().iter().enumerate() {
+            let o = (i * TRAIL_CAPACITY + h) * POSE_STRIDE;
+            self.trails[o..o + POSE_STRIDE].copy_from_slice(&r.pose.to_array());
+            self.trail_lens[i] = (self.trail_lens[i] + 1).min(TRAIL_CAPACITY);
+        }
+        self.trail_times[h] = self.time();
+        self.trail_min_pair[h] = min_pair(&self.sim, self.scenario.independent);
+        self.history_len = (self.history_len + 1).min(TRAIL_CAPACITY);
+        self.trail_head = (h + 1) % TRAIL_CAPACITY;
+    }
+
+    /// Copies poses and controller states into their flat buffers.
+    fn refresh(&mut self) {
+        self.poses.clear();
+        self.status.clear();
+        for r in self.sim.robots() {
+            self.poses.extend_from_slice(&r.pose.to_array());
+            let e = r.last;
+            let vo = e.virtual_obstacle.unwrap_or(DVec2::NAN);
+            self.status.extend_from_slice(&[
+                e.command.v,
+                e.command.omega,
+                e.obstacle_keep,
+                e.robot_keep,
+                vo.x,
+                vo.y,
+            ]);
+        }
+    }
+
+    /// Runs a copy of the simulation to the scenario's end (or until every robot has
+    /// converged) and keeps at most [`PREDICTION_SAMPLES`] evenly spaced samples of it.
+    pub fn predict(&mut self) {
+        let left = self.scenario.steps().saturating_sub(self.steps());
+        let every = left.div_ceil(PREDICTION_SAMPLES - 1).max(1);
+        let mut sim = self.sim.clone();
+        self.predicted_times.clear();
+        self.predicted_min_pair.clear();
+        let n = sim.robots().len();
+        // Robot-major layout, but samples arrive time-major: collect per sample, transpose after.
+        let mut by_time: Vec<f64> = Vec::with_capacity(PREDICTION_SAMPLES * n * POSE_STRIDE);
+        let base = self.base_time;
+        let independent = self.scenario.independent;
+        let mut push = |sim: &Simulation, times: &mut Vec<f64>, pairs: &mut Vec<f64>| {
+            times.push(base + sim.time());
+            pairs.push(min_pair(sim, independent));
+            for r in sim.robots() {
+                by_time.extend_from_slice(&r.pose.to_array());
+            }
+        };
+        push(
+            &sim,
+            &mut self.predicted_times,
+            &mut self.predicted_min_pair,
+        );
+        for k in 1..=left {
+            sim.step();
+            let done = k == left || all_converged(&sim);
+            if k % every == 0 || done {
+                push(
+                    &sim,
+                    &mut self.predicted_times,
+                    &mut self.predicted_min_pair,
+                );
+            }
+            if done {
+                break;
+            }
+        }
+        let samples = self.predicted_times.len();
+        self.predicted_samples = samples;
+        self.predicted.clear();
+        self.predicted.resize(n * samples * POSE_STRIDE, 0.0);
+        for k in 0..samples {
+            for i in 0..n {
+                let src = (k * n + i) * POSE_STRIDE;
+                let dst = (i * samples + k) * POSE_STRIDE;
+                self.predicted[dst..dst + POSE_STRIDE]
+                    .copy_from_slice(&by_time[src..src + POSE_STRIDE]);
+            }
+        }
+    }
+
+    /// Samples, on an `nx × ny` grid over `bounds = [xmin, ymin, xmax, ymax]`, the field `Γ`
+    /// that robot `index` would follow at each point with its current attitude and goal,
+    /// among the obstacles and the other robots where they are now (what it senses from
+    /// there). The arrows turn as the robot turns: the field is dynamic.
+    ///
+    /// # Errors
+    /// An index out of range, a grid side outside `2..=MAX_GRID_SIDE`, or bad bounds.
+    pub fn sample_field(
+        &mut self,
+        index: usize,
+        bounds: [f64; 4],
+        nx: usize,
+        ny: usize,
+    ) -> Result<&[f64], Error> {
+        let robot = *self.robot(index)?;
+        grid_side("nx", nx)?;
+        grid_side("ny", ny)?;
+        check_bounds(bounds)?;
+        let params = *self.sim.params();
+        let rs = params.sense_radius;
+        let independent = self.scenario.independent;
+        let [x0, y0, x1, y1] = bounds;
+        self.field.clear();
+        let mut neighbours: Vec<DVec2> = Vec::new();
+        for j in 0..ny {
+            let y = y0 + (y1 - y0) * j as f64 / (ny - 1) as f64;
+            for i in 0..nx {
+                let x = x0 + (x1 - x0) * i as f64 / (nx - 1) as f64;
+                let pose = Pose::new(x, y, robot.pose.theta);
+                neighbours.clear();
+                if !independent {
+                    neighbours.extend(
+                        self.sim
+                            .robots()
+                            .iter()
+                            .enumerate()
+                            .filter(|&(k, o)| {
+                                k != index && o.pose.p.distance_squared(pose.p) <= rs * rs
+                            })
+                            .map(|(_, o)| o.pose.p),
+                    );
+                }
+                let sensed = self
+                    .sim
+                    .obstacles()
+                    .iter()
+                    .filter(|o| o.clearance(pose.p) <= rs);
+                let e = evaluate(
+                    &params,
+                    pose,
+                    pose.error_to(robot.goal),
+                    sensed,
+                    neighbours.iter().copied(),
+                );
+                self.field.extend_from_slice(&[x, y, e.field.x, e.field.y]);
+            }
+        }
+        Ok(&self.field)
+    }
+
+    /// Integral curves of the goal field of robot `index`'s goal (the paper's Fig. 1): from
+    /// each point of an `n × n` grid over `bounds`, with attitude `theta0` (rad) at the start,
+    /// [`CURVE_POINTS`] points each.
+    ///
+    /// # Errors
+    /// An index out of range, `n` outside `2..=MAX_CURVE_SIDE`, bad bounds or a non-finite
+    /// `theta0`.
+    pub fn integral_curves(
+        &mut self,
+        index: usize,
+        theta0: f64,
+        bounds: [f64; 4],
+        n: usize,
+    ) -> Result<&[f64], Error> {
+        let goal = self.robot(index)?.goal;
+        if !(2..=MAX_CURVE_SIDE).contains(&n) {
+            return Err(Error::Invalid {
+                field: "n".into(),
+                message: format!("must be between 2 and {MAX_CURVE_SIDE}, not {n}"),
+            });
+        }
+        check_bounds(bounds)?;
+        if !theta0.is_finite() {
+            return Err(Error::Invalid {
+                field: "theta0".into(),
+                message: format!("must be a finite angle in radians, not {theta0}"),
+            });
+        }
+        let steps = (CURVE_TIME / CURVE_DT).round() as usize;
+        let every = steps / (CURVE_POINTS - 1);
+        let [x0, y0, x1, y1] = bounds;
+        self.curves.clear();
+        for j in 0..n {
+            // Cell centres, so that no curve starts on the border.
+            let y = y0 + (y1 - y0) * (j as f64 + 0.5) / n as f64;
+            for i in 0..n {
+                let x = x0 + (x1 - x0) * (i as f64 + 0.5) / n as f64;
+                let curve = integral_curve(Pose::new(x, y, theta0), goal, CURVE_DT, steps);
+                for p in curve.iter().step_by(every).take(CURVE_POINTS) {
+                    self.curves.extend_from_slice(&[p.x, p.y]);
+                }
+            }
+        }
+        Ok(&self.curves)
+    }
+
+    fn robot(&self, index: usize) -> Result<&crate::sim::Robot, Error> {
+        let count = self.sim.robots().len();
+        self.sim
+            .robots()
+            .get(index)
+            .ok_or(Error::RobotIndex { index, count })
+    }
+
+    /// `[robots · 3]` poses now.
+    #[must_use]
+    pub fn poses(&self) -> &[f64] {
+        &self.poses
+    }
+    /// `[robots · 6]` controller states now (see the module doc).
+    #[must_use]
+    pub fn status(&self) -> &[f64] {
+        &self.status
+    }
+    /// `[robots · TRAIL_CAPACITY · 3]` trail rings.
+    #[must_use]
+    pub fn trails(&self) -> &[f64] {
+        &self.trails
+    }
+    /// The slot the next sample is written to (shared by every ring).
+    #[must_use]
+    pub fn trail_head(&self) -> usize {
+        self.trail_head
+    }
+    /// Valid samples in robot `index`'s trail (0 for an index out of range).
+    #[must_use]
+    pub fn trail_len(&self, index: usize) -> usize {
+        self.trail_lens.get(index).copied().unwrap_or(0)
+    }
+    /// `[TRAIL_CAPACITY]` ring of the times of the trail samples (s).
+    #[must_use]
+    pub fn trail_times(&self) -> &[f64] {
+        &self.trail_times
+    }
+    /// `[TRAIL_CAPACITY]` ring of the minimum pair distance at those times.
+    #[must_use]
+    pub fn trail_min_pair(&self) -> &[f64] {
+        &self.trail_min_pair
+    }
+    /// Valid samples in the time and pair-distance rings.
+    #[must_use]
+    pub fn history_len(&self) -> usize {
+        self.history_len
+    }
+    /// `[robots · samples · 3]` predicted poses.
+    #[must_use]
+    pub fn predicted(&self) -> &[f64] {
+        &self.predicted
+    }
+    /// Samples per robot in the prediction (at least 1: the current state).
+    #[must_use]
+    pub fn predicted_samples(&self) -> usize {
+        self.predicted_samples
+    }
+    /// `[samples]` times of the predicted samples (s).
+    #[must_use]
+    pub fn predicted_times(&self) -> &[f64] {
+        &self.predicted_times
+    }
+    /// `[samples]` predicted minimum pair distance.
+    #[must_use]
+    pub fn predicted_min_pair(&self) -> &[f64] {
+        &self.predicted_min_pair
+    }
+}
+
+/// The scenario checks plus the playground's robot limit.
+fn check(s: &Scenario) -> Result<(), Error> {
+    s.validate()?;
+    if s.robots.len() > MAX_LIVE_ROBOTS {
+        return Err(Error::Invalid {
+            field: "robots".into(),
+            message: format!(
+                "the playground simulates at most {MAX_LIVE_ROBOTS} robots live, not {} (the `dvf` command line takes more)",
+                s.robots.len()
+            ),
+        });
+    }
+    let steps = s.steps();
+    if steps > MAX_LIVE_STEPS {
+        return Err(Error::Invalid {
+            field: "duration".into(),
+            message: format!(
+                "the playground runs at most {MAX_LIVE_STEPS} steps live, not {steps} (duration / dt): shorten the duration or raise dt (the `dvf` command line runs longer scenarios)"
+            ),
+        });
+    }
+    let n = s.robots.len();
+    let work = n * n * steps;
+    if work > MAX_LIVE_WORK {
+        return Err(Error::Invalid {
+            field: "duration".into(),
+            message: format!(
+                "{n} robots over {steps} steps are too much to predict on every edit: robots² · steps must be at most {MAX_LIVE_WORK} (at most {} steps for {n} robots); shorten the duration, raise dt or use fewer robots",
+                MAX_LIVE_WORK / (n * n)
+            ),
+        });
+    }
+    Ok(())
+}
+
+fn record_every(s: &Scenario) -> usize {
+    s.steps().div_ceil(TRAIL_CAPACITY - 1).max(1)
+}
+
+fn grid_side(field: &str, n: usize) -> Result<(), Error> {
+    if (2..=MAX_GRID_SIDE).contains(&n) {
+        Ok(())
+    } else {
+        Err(Error::Invalid {
+            field: field.into(),
+            message: format!("must be between 2 and {MAX_GRID_SIDE}, not {n}"),
+        })
+    }
+}
+
+fn check_bounds(b: [f64; 4]) -> Result<(), Error> {
+    let ok = b
+        .iter()
+        .all(|v| v.is_finite() && v.abs() <= crate::scenario::MAX_BOUNDS)
+        && b[0] < b[2]
+        && b[1] < b[3];
+    if ok {
+        Ok(())
+    } else {
+        Err(Error::Invalid {
+            field: "bounds".into(),
+            message: format!(
+                "must be four finite numbers [xmin, ymin, xmax, ymax] with xmin < xmax and ymin < ymax, not {b:?}"
+            ),
+        })
+    }
+}
+
+/// The smallest distance between two interacting robots now (NaN when there is no pair).
+fn min_pair(sim: &Simulation, independent: bool) -> f64 {
+    if independent {
+        return f64::NAN;
+    }
+    let r = sim.robots();
+    let mut m = f64::INFINITY;
+    for i in 0..r.len() {
+        for j in i + 1..r.len() {
+            m = m.min(r[i].pose.p.distance(r[j].pose.p));
+        }
+    }
+    if m.is_finite() {
+        m
+    } else {
+        f64::NAN
+    }
+}
+
+fn all_converged(sim: &Simulation) -> bool {
+    let p = sim.params();
+    sim.robots()
+        .iter()
+        .all(|r| r.position_error() <= p.tol_position && r.heading_error_abs() <= p.tol_heading)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
+    use crate::approx::assert_close;
+    use crate::presets::{preset, DEFAULT_PRESET};
+    use std::f64::consts::FRAC_PI_2;
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    fn two() -> Scenario {
+        Scenario::from_json(
+            r#"{"duration":10,"robots":[{"start":[0,0,0],"goal":[10,0,0]},{"start":[10,0,3.14159],"goal":[0,0,3.14159]}],
+                "obstacles":[{"center":[5,8],"radius":1,"influence":2}]}"#,
+        )
+        .unwrap()
+    }
+
+    /// The prediction from t = 0 is the run that playing produces, sample for sample.
+    #[test]
+    fn prediction_is_what_playing_shows() {
+        let mut live = Live::new(preset(DEFAULT_PRESET).unwrap()).unwrap();
+        let samples = live.predicted_samples();
+        assert!((2..=PREDICTION_SAMPLES).contains(&samples));
+        let n = live.scenario().robots.len();
+        assert_eq!(live.predicted().len(), n * samples * POSE_STRIDE);
+        let times = live.predicted_times().to_vec();
+        let predicted = live.predicted().to_vec();
+        let k = samples / 2;
+        let target = ((times[k] - times[0]) / live.scenario().dt).round() as usize;
+        live.step(target);
+        for i in 0..n {
+            let o = (i * samples + k) * POSE_STRIDE;
+            assert_eq!(&predicted[o..o + 3], &live.poses()[i * 3..i * 3 + 3]);
+        }
+        // Predicting again from the middle changes nothing: the rest of the same run.
+        let before = predicted[((samples - 1) * POSE_STRIDE)..][..2].to_vec();
+        live.predict();
+        let s2 = live.predicted_samples();
+        assert_eq!(
+            &live.predicted()[(s2 - 1) * POSE_STRIDE..][..2],
+            &before[..]
+        );
+    }
+
+    #[test]
+    fn the_clock_stops_at_the_end_and_trails_stay_bounded() {
+        let mut s = two();
+        s.duration = 30.0;
+        let mut live = Live::new(s).unwrap();
+        let total = live.scenario().steps();
+        assert_eq!(live.step(total + 50), total);
+        assert!(live.finished());
+        assert_eq!(live.step(1), 0);
+        assert_close!(live.time(), 30.0, 1e-9);
+        assert!(live.history_len() <= TRAIL_CAPACITY);
+        assert_eq!(live.trails().len(), 2 * TRAIL_CAPACITY * POSE_STRIDE);
+        // The newest trail sample is the pose now.
+        let last = (live.trail_head() + TRAIL_CAPACITY - 1) % TRAIL_CAPACITY;
+        assert_eq!(&live.trails()[last * 3..last * 3 + 3], &live.poses()[0..3]);
+        assert_close!(live.trail_times()[last], 30.0, 1e-9);
+        assert!(live.trail_min_pair()[last] > 0.0);
+    }
+
+    /// At t = 0 a move edits the start; at t > 0 the current pose, and reset forgets it.
+    #[test]
+    fn moving_a_robot_edits_the_start_only_at_time_zero() {
+        let mut live = Live::new(two()).unwrap();
+        live.move_robot(0, Pose::new(0.0, -3.0, FRAC_PI_2)).unwrap();
+        assert_eq!(live.scenario().robots[0].start, [0.0, -3.0, FRAC_PI_2]);
+        live.step(100);
+        let t = live.time();
+        live.move_robot(1, Pose::new(5.0, -5.0, 0.0)).unwrap();
+        assert_eq!(live.time(), t);
+        assert_eq!(&live.poses()[3..6], &[5.0, -5.0, 0.0]);
+        assert_eq!(live.scenario().robots[1].start[0], 10.0);
+        assert_eq!(live.predicted()[live.predicted_samples() * 3], 5.0);
+        live.reset();
+        assert_eq!(live.time(), 0.0);
+        assert_eq!(&live.poses()[3..5], &[10.0, 0.0]);
+    }
+
+    #[test]
+    fn bad_edits_are_refused_and_change_nothing() {
+        let mut live = Live::new(two()).unwrap();
+        live.step(10);
+        let before = live.poses().to_vec();
+        let e = live.move_robot(5, Pose::IDENTITY).unwrap_err().to_string();
+        assert!(e.contains("index 5 is out of range"), "{e}");
+        let e = live
+            .move_robot(0, Pose::new(f64::NAN, 0.0, 0.0))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("robots[0].pose[0]: must be a finite number"),
+            "{e}"
+        );
+        let e = live
+            .move_robot(0, Pose::new(5.0, 8.0, 0.0))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("robots[0]: would be inside obstacles[0]"),
+            "{e}"
+        );
+        let mut s = live.scenario().clone();
+        s.params.k_v = -1.0;
+        let e = live.edit(s).unwrap_err().to_string();
+        assert!(e.starts_with("params.k_v: must be positive"), "{e}");
+        assert_eq!(live.poses(), &before[..]);
+        assert!(live.sample_field(2, [0.0, 0.0, 1.0, 1.0], 4, 4).is_err());
+        assert!(live.sample_field(0, [0.0, 0.0, 1.0, 1.0], 1, 4).is_err());
+        assert!(live
+            .sample_field(0, [0.0, 0.0, f64::NAN, 1.0], 4, 4)
+            .is_err());
+        assert!(live
+            .integral_curves(0, f64::INFINITY, [0.0, 0.0, 1.0, 1.0], 4)
+            .is_err());
+        let many = Scenario {
+            robots: vec![live.scenario().robots[0]; MAX_LIVE_ROBOTS + 1],
+            ..live.scenario().clone()
+        };
+        assert!(Live::new(many)
+            .unwrap_err()
+            .to_string()
+            .starts_with("robots: the playground"));
+        let mut long = live.scenario().clone();
+        long.duration = 3_000.0;
+        long.dt = 0.01;
+        let e = Live::new(long).unwrap_err().to_string();
+        assert!(
+            e.starts_with("duration: the playground runs at most"),
+            "{e}"
+        );
+        let crowd = Scenario {
+            robots: (0..100)
+                .map(|k| RobotSpec {
+                    start: [k as f64 * 3.0, 0.0, 0.0],
+                    goal: [k as f64 * 3.0, 50.0, 0.0],
+                })
+                .collect(),
+            duration: 60.0,
+            ..live.scenario().clone()
+        };
+        let e = Live::new(crowd).unwrap_err().to_string();
+        assert!(
+            e.starts_with("duration: 100 robots over 6000 steps are too much"),
+            "{e}"
+        );
+    }
+
+    /// Editing a goal at t > 0 keeps the clock and the poses, adds a robot at its start, and
+    /// keeps the trails of the robots that remain.
+    #[test]
+    fn edits_apply_live() {
+        let mut live = Live::new(two()).unwrap();
+        live.step(200);
+        let (t, poses, len) = (live.time(), live.poses().to_vec(), live.trail_len(0));
+        let mut s = live.scenario().clone();
+        s.robots[0].goal = [0.0, 10.0, 0.0];
+        s.robots.push(RobotSpec {
+            start: [-5.0, -5.0, 0.0],
+            goal: [-5.0, 5.0, 0.0],
+        });
+        live.edit(s).unwrap();
+        assert_eq!(live.time(), t);
+        assert_eq!(&live.poses()[..6], &poses[..]);
+        assert_eq!(&live.poses()[6..8], &[-5.0, -5.0]);
+        assert_eq!(live.trail_len(0), len);
+        assert_eq!(live.trail_len(2), 0);
+        live.step(1);
+        assert_eq!(
+            live.trail_len(2),
+            usize::from(live.steps() % live.record_every == 0)
+        );
+        assert_eq!(live.status().len(), 3 * STATUS_STRIDE);
+        // Removing a robot drops it.
+        let mut s = live.scenario().clone();
+        s.robots.truncate(1);
+        live.edit(s).unwrap();
+        assert_eq!(live.poses().len(), 3);
+        assert!(live.predicted_min_pair()[0].is_nan());
+    }
+
+    /// The field at the robot's own position is the field it follows, and it turns with the
+    /// robot's attitude.
+    #[test]
+    fn field_samples_follow_the_robot() {
+        let mut live = Live::new(two()).unwrap();
+        let e = live.simulation().robots()[0].last.field;
+        let grid = live
+            .sample_field(0, [0.0, 0.0, 10.0, 10.0], 11, 11)
+            .unwrap()
+            .to_vec();
+        assert_eq!(grid.len(), 11 * 11 * FIELD_STRIDE);
+        assert_eq!(&grid[..2], &[0.0, 0.0]);
+        assert_close!(grid[2], e.x, 1e-12);
+        assert_close!(grid[3], e.y, 1e-12);
+        live.move_robot(0, Pose::new(0.0, 0.0, FRAC_PI_2)).unwrap();
+        let turned = live
+            .sample_field(0, [0.0, 0.0, 10.0, 10.0], 11, 11)
+            .unwrap();
+        assert!((turned[2] - grid[2]).abs() + (turned[3] - grid[3]).abs() > 0.1);
+    }
+
+    #[test]
+    fn integral_curves_end_at_the_goal() {
+        let mut live = Live::new(two()).unwrap();
+        let c = live
+            .integral_curves(0, FRAC_PI_2, [-20.0, -20.0, 20.0, 20.0], 3)
+            .unwrap();
+        assert_eq!(c.len(), 9 * CURVE_POINTS * 2);
+        let end = (CURVE_POINTS - 1) * 2;
+        assert_close!(
+            DVec2::new(c[end], c[end + 1]).distance(DVec2::new(10.0, 0.0)),
+            0.0,
+            0.1
+        );
+    }
+}

@@ -1,0 +1,175 @@
+// Shared by the end-to-end tests: a python3 http.server on www/ (the RELEASE wasm package that
+// `make build-wasm` writes), Debian's Chromium through playwright-core, a check list that
+// fails the run, and pixel statistics of a playground's canvas.
+
+import { spawn } from 'node:child_process';
+import { existsSync, mkdirSync } from 'node:fs';
+import { createServer } from 'node:net';
+import { dirname, join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+export const ROOT = join(dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const WWW = join(ROOT, 'www');
+export const RESULTS = join(ROOT, 'test-results');
+const CHROMIUM = '/usr/bin/chromium';
+const CHROMIUM_ARGS = [
+  '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync',
+];
+const SERVER_START_TIMEOUT_MS = 10_000;
+export const PAGE_TIMEOUT_MS = 20_000;
+/** A pixel is "coloured" when its channels spread by more than this (greys spread ~0). */
+const COLOURED_SPREAD = 60;
+
+const failures = [];
+/** Records one check; a failed one fails the run at the end. */
+export function check(ok, message) {
+  if (ok) console.log(`ok   ${message}`);
+  else {
+    console.log(`FAIL ${message}`);
+    failures.push(message);
+  }
+}
+
+/** A free TCP port on 127.0.0.1. */
+function freePort() {
+  return new Promise((resolve, reject) => {
+    const srv = createServer();
+    srv.unref();
+    srv.on('error', reject);
+    srv.listen(0, '127.0.0.1', () => {
+      const { port } = srv.address();
+      srv.close(() => resolve(port));
+    });
+  });
+}
+
+/** Starts python3's http.server on www/ and resolves with its base URL once it answers. */
+async function startServer() {
+  const port = await freePort();
+  const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', WWW], {
+    stdio: ['ignore', 'ignore', 'pipe'],
+  });
+  let stderr = '';
+  server.stderr.on('data', (d) => { stderr += d; });
+  const deadline = Date.now() + SERVER_START_TIMEOUT_MS;
+  while (Date.now() < deadline) {
+    if (server.exitCode !== null) throw new Error(`http.server exited: ${stderr}`);
+    try {
+      const res = await fetch(`http://127.0.0.1:${port}/index.html`);
+      if (res.ok) return { server, base: `http://127.0.0.1:${port}` };
+    } catch {
+      // not listening yet
+    }
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  server.kill();
+  throw new Error(`http.server did not answer within ${SERVER_START_TIMEOUT_MS} ms`);
+}
+
+/**
+ * Runs `body({browser, base, newPage})` against the served page and exits non-zero when a
+ * check failed. `newPage(options)` opens a page that records every console error or warning,
+ * page error, failed request and HTTP error into `page.problems`.
+ */
+export async function run(body) {
+  const wasm = join(WWW, 'pkg', 'dvf_bg.wasm');
+  let server;
+  let browser;
+  try {
+    if (!existsSync(wasm)) throw new Error(`${wasm} is missing: run make build-wasm first`);
+    mkdirSync(RESULTS, { recursive: true });
+    const started = await startServer();
+    server = started.server;
+    browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+    const newPage = async (options = {}) => {
+      const context = await browser.newContext({ acceptDownloads: true, ...options });
+      const page = await context.newPage();
+      page.setDefaultTimeout(PAGE_TIMEOUT_MS);
+      page.problems = [];
+      page.on('console', (m) => {
+        if (m.type() === 'error' || m.type() === 'warning') page.problems.push(`console.${m.type()}: ${m.text()}`);
+      });
+      page.on('pageerror', (e) => page.problems.push(`page error: ${e.message}`));
+      page.on('requestfailed', (r) => page.problems.push(`request failed: ${r.url()} ${r.failure()?.errorText}`));
+      page.on('response', (r) => {
+        if (r.status() >= 400) page.problems.push(`HTTP ${r.status()}: ${r.url()}`);
+      });
+      return page;
+    };
+    await body({ browser, base: started.base, newPage });
+  } catch (e) {
+    check(false, e.stack ?? String(e));
+  } finally {
+    if (browser) await browser.close();
+    server?.kill();
+  }
+  if (failures.length) {
+    console.log(`\n${failures.length} failure(s)`);
+    process.exitCode = 1;
+  } else {
+    console.log('\nall checks passed');
+  }
+}
+
+/** Checks that `page` logged no console error or warning and no page or request error. */
+export function checkQuiet(page, what) {
+  const p = page.problems;
+  check(p.length === 0, `${what}: no console errors or warnings, no page errors${p.length ? `:\n  ${p.join('\n  ')}` : ''}`);
+}
+
+/** Waits for two animation frames, so that a requested draw has happened. */
+export function frames(page) {
+  return page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+}
+
+/** Waits until the playground matching `selector` has shown its first scene. */
+export async function waitLoaded(page, selector = 'dvf-playground') {
+  await page.waitForFunction((sel) => document.querySelector(sel)?.cache, selector);
+  await page.evaluate((sel) => document.querySelector(sel).loaded, selector);
+  await frames(page);
+}
+
+/** The current scenario of the playground matching `selector`. */
+export function scenarioOf(page, selector = 'dvf-playground') {
+  return page.evaluate((sel) => document.querySelector(sel).scenario(), selector);
+}
+
+/**
+ * Pixel statistics of a playground's canvas backing store: size, coloured pixels, and a
+ * down-sampled copy (mean of each 8×8 block) for comparing two pictures.
+ */
+export function canvasStats(page, selector = 'dvf-playground') {
+  return page.evaluate(([sel, spread]) => {
+    const c = document.querySelector(sel).shadowRoot.querySelector('[data-id="canvas"]');
+    // Read through a copy, so that the page's own context never reads back (Chromium warns
+    // when a context without willReadFrequently is read repeatedly).
+    const copy = document.createElement('canvas');
+    copy.width = c.width;
+    copy.height = c.height;
+    const cc = copy.getContext('2d', { willReadFrequently: true });
+    cc.drawImage(c, 0, 0);
+    const { data } = cc.getImageData(0, 0, c.width, c.height);
+    let coloured = 0;
+    const block = 8;
+    const bw = Math.ceil(c.width / block);
+    const bh = Math.ceil(c.height / block);
+    const blocks = new Array(bw * bh).fill(0);
+    for (let i = 0; i < data.length; i += 4) {
+      const r = data[i], g = data[i + 1], b = data[i + 2];
+      if (Math.max(r, g, b) - Math.min(r, g, b) > spread) coloured++;
+      const p = i / 4;
+      blocks[Math.floor(p / c.width / block) * bw + Math.floor((p % c.width) / block)] += r + g + b;
+    }
+    return { width: c.width, height: c.height, cssWidth: c.clientWidth, dpr: window.devicePixelRatio, coloured, blocks };
+  }, [selector, COLOURED_SPREAD]);
+}
+
+/** Fraction of 8×8 blocks whose mean colour differs noticeably between two canvasStats. */
+export function changedFraction(a, b) {
+  if (a.blocks.length !== b.blocks.length) return 1;
+  return a.blocks.filter((v, i) => Math.abs(v - b.blocks[i]) > 8 * 8 * 3 * 4).length / a.blocks.length;
+}
+
+export { join };
