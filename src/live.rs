@@ -35,6 +35,7 @@ use crate::field::integral_curve;
 use crate::scenario::{RobotSpec, Scenario};
 use crate::se2::Pose;
 use crate::sim::Simulation;
+use crate::swarm::Neighbour;
 use glam::DVec2;
 
 /// At most this many robots in the playground: prediction costs `O(robots² · steps)` per edit.
@@ -385,7 +386,7 @@ impl Live {
         let independent = self.scenario.independent;
         let [x0, y0, x1, y1] = bounds;
         self.field.clear();
-        let mut neighbours: Vec<DVec2> = Vec::new();
+        let mut neighbours: Vec<Neighbour> = Vec::new();
         for j in 0..ny {
             let y = y0 + (y1 - y0) * j as f64 / (ny - 1) as f64;
             for i in 0..nx {
@@ -401,7 +402,10 @@ impl Live {
                             .filter(|&(k, o)| {
                                 k != index && o.pose.p.distance_squared(pose.p) <= rs * rs
                             })
-                            .map(|(_, o)| o.pose.p),
+                            .map(|(_, o)| Neighbour {
+                                position: o.pose.p,
+                                speed: o.last.command.v.abs(),
+                            }),
                     );
                 }
                 let sensed = self
@@ -413,6 +417,7 @@ impl Live {
                     &params,
                     pose,
                     pose.error_to(robot.goal),
+                    robot.last.command.v.abs(),
                     sensed,
                     neighbours.iter().copied(),
                 );
@@ -638,6 +643,7 @@ mod tests {
     // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     use crate::approx::assert_close;
     use crate::presets::{preset, DEFAULT_PRESET};
+    use crate::scenario::RobotSpec;
     use std::f64::consts::FRAC_PI_2;
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
@@ -751,7 +757,12 @@ mod tests {
             .integral_curves(0, f64::INFINITY, [0.0, 0.0, 1.0, 1.0], 4)
             .is_err());
         let many = Scenario {
-            robots: vec![live.scenario().robots[0]; MAX_LIVE_ROBOTS + 1],
+            robots: (0..=MAX_LIVE_ROBOTS)
+                .map(|k| RobotSpec {
+                    start: [10.0 * k as f64, -50.0, 0.0],
+                    goal: [10.0 * k as f64, 50.0, 0.0],
+                })
+                .collect(),
             ..live.scenario().clone()
         };
         assert!(Live::new(many)
