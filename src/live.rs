@@ -40,10 +40,14 @@ use glam::DVec2;
 
 /// At most this many robots in the playground: prediction costs `O(robots² · steps)` per edit.
 pub const MAX_LIVE_ROBOTS: usize = 100;
-/// At most this many steps (`duration / dt`) in a live scenario.
-pub const MAX_LIVE_STEPS: usize = 200_000;
-/// At most this much prediction work, `robots² · steps`: an edit (and a link someone shares)
-/// must not freeze the page. Example 4 (10 robots, 2,500 steps) needs 250,000.
+/// At most this many steps (`duration / dt`) in a live scenario: the trails are bounded, so
+/// a long run costs time, not memory.
+pub const MAX_LIVE_STEPS: usize = 1_000_000;
+/// A predicted path looks at most this many steps ahead.
+pub const MAX_PREDICTION_STEPS: usize = 200_000;
+/// At most this much prediction work, `robots² · min(steps, MAX_PREDICTION_STEPS)`: an edit
+/// (and a link someone shares) must not freeze the page. Example 4 (10 robots, 2,500 steps)
+/// needs 250,000.
 pub const MAX_LIVE_WORK: usize = 50_000_000;
 /// Samples kept per robot in the trail ring.
 pub const TRAIL_CAPACITY: usize = 2_048;
@@ -311,9 +315,13 @@ impl Live {
     }
 
     /// Runs a copy of the simulation to the scenario's end (or until every robot has
-    /// converged) and keeps at most [`PREDICTION_SAMPLES`] evenly spaced samples of it.
+    /// converged, or [`MAX_PREDICTION_STEPS`] ahead) and keeps at most [`PREDICTION_SAMPLES`] evenly spaced samples of it.
     pub fn predict(&mut self) {
-        let left = self.scenario.steps().saturating_sub(self.steps());
+        let left = self
+            .scenario
+            .steps()
+            .saturating_sub(self.steps())
+            .min(MAX_PREDICTION_STEPS);
         let every = left.div_ceil(PREDICTION_SAMPLES - 1).max(1);
         let mut sim = self.sim.clone();
         self.predicted_times.clear();
@@ -565,7 +573,7 @@ fn check(s: &Scenario) -> Result<(), Error> {
         });
     }
     let n = s.robots.len();
-    let work = n * n * steps;
+    let work = n * n * steps.min(MAX_PREDICTION_STEPS);
     if work > MAX_LIVE_WORK {
         return Err(Error::Invalid {
             field: "duration".into(),
@@ -771,7 +779,7 @@ mod tests {
             .starts_with("robots: the playground"));
         let mut long = live.scenario().clone();
         long.duration = 3_000.0;
-        long.dt = 0.01;
+        long.dt = 0.002;
         let e = Live::new(long).unwrap_err().to_string();
         assert!(
             e.starts_with("duration: the playground runs at most"),

@@ -139,38 +139,65 @@ pub const TABLE2_OBSTACLES: [[f64; 2]; 3] = [[-9.2, 14.0], [-18.0, 13.0], [-19.6
 /// at `x = 20` in reverse order, keeping their heading: every path crosses the others near
 /// the middle.
 fn example3_line() -> Scenario {
-    let ys = [-20.0, -10.0, 0.0, 10.0, 20.0];
     Scenario {
         name: "Example 3: line to line with collision avoidance".into(),
         bounds: Some([-30.0, -30.0, 30.0, 30.0]),
         duration: 15.0,
-        dt: 0.01,
-        params: Params::default(),
-        independent: false,
-        robots: ys
-            .iter()
-            .map(|&y| robot([-20.0, y, 0.0], [20.0, -y, 0.0]))
-            .collect(),
-        obstacles: vec![],
+        ..line_swap(5, 10.0)
     }
 }
 
 /// Example 3, scenario 2: six robots on a circle of radius 20, each facing the centre, swap
 /// with the antipodal robot and end with their initial orientation.
 fn example3_circle() -> Scenario {
-    let n = 6;
+    Scenario {
+        name: "Example 3: antipodal swap on a circle".into(),
+        bounds: Some([-30.0, -30.0, 30.0, 30.0]),
+        duration: 15.0,
+        ..circle_swap(6, 20.0)
+    }
+}
+
+/// `n` robots evenly spaced on a circle of `radius` about the origin, each facing the centre,
+/// swap with the antipodal robot and end with their initial heading (Example 3, scenario 2,
+/// for any `n`). 120 s, default parameters.
+#[must_use]
+pub fn circle_swap(n: usize, radius: f64) -> Scenario {
     let robots = (0..n)
         .map(|k| {
             let a = 2.0 * PI * k as f64 / n as f64;
-            let p = 20.0 * DVec2::from_angle(a);
+            let p = radius * DVec2::from_angle(a);
             let facing = crate::se2::wrap_angle(a + PI);
             robot([p.x, p.y, facing], [-p.x, -p.y, facing])
         })
         .collect();
     Scenario {
-        name: "Example 3: antipodal swap on a circle".into(),
-        bounds: Some([-30.0, -30.0, 30.0, 30.0]),
-        duration: 15.0,
+        name: format!("{n} robots swap across a circle of radius {radius}"),
+        bounds: None,
+        duration: 120.0,
+        dt: 0.01,
+        params: Params::default(),
+        independent: false,
+        robots,
+        obstacles: vec![],
+    }
+}
+
+/// `n` robots in a vertical line at `x = −20`, `spacing` apart and facing east, swap to the
+/// line at `x = 20` in reversed order (Example 3, scenario 1, for any `n`). 120 s, default
+/// parameters.
+#[must_use]
+pub fn line_swap(n: usize, spacing: f64) -> Scenario {
+    let robots = (0..n)
+        .map(|k| {
+            let y = spacing * (k as f64 - 0.5 * (n as f64 - 1.0));
+            robot([-20.0, y, 0.0], [20.0, -y, 0.0])
+        })
+        .collect();
+    Scenario {
+        name: format!("{n} robots swap between two lines"),
+        bounds: None,
+        duration: 120.0,
         dt: 0.01,
         params: Params::default(),
         independent: false,

@@ -272,7 +272,7 @@ fn playground_rejects_bad_input_with_the_field_named() {
     let many = format!(
         r#"{{"robots":[{}]}}"#,
         (0..=MAX_LIVE_ROBOTS)
-            .map(|k| format!(r#"{{"start":[{k},0,0],"goal":[{k},10,0]}}"#))
+            .map(|k| format!(r#"{{"start":[{},0,0],"goal":[{},50,0]}}"#, 10 * k, 10 * k))
             .collect::<Vec<_>>()
             .join(",")
     );
@@ -282,7 +282,7 @@ fn playground_rejects_bad_input_with_the_field_named() {
         "{m}"
     );
     // A scenario too long to predict on every edit is refused before it can freeze the page.
-    let long = r#"{"duration":3000,"dt":0.01,"robots":[{"start":[0,0,0],"goal":[1,2,3]}]}"#;
+    let long = r#"{"duration":3000,"dt":0.002,"robots":[{"start":[0,0,0],"goal":[1,2,3]}]}"#;
     let m = message(Playground::new(long.into()).err().unwrap());
     assert!(
         m.starts_with("duration: the playground runs at most"),
