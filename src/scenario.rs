@@ -27,8 +27,9 @@ pub const MAX_DURATION: f64 = 3_600.0;
 pub const MAX_STEPS: f64 = 10_000_000.0;
 /// The largest step size accepted (s).
 pub const MAX_DT: f64 = 0.1;
-/// `dt · max(k_a, k_ω)` must stay below this: the alignment loop `δ̇ ≈ −k_a δ` sampled with a
-/// zero-order hold is stable for `k_a·dt < 2` and monotone for `k_a·dt < 1`.
+/// `dt · max(k_a, k_ω, k_v)` must stay below this: the alignment loop `δ̇ ≈ −k_a δ` sampled
+/// with a zero-order hold is stable for `k_a·dt < 2` and monotone for `k_a·dt < 1`, and so are
+/// the attitude loop with `k_ω` and the position loop `ṗ̃ ≈ −k_v p̃` near the goal.
 pub const MAX_GAIN_STEP: f64 = 1.0;
 /// `dt · barrier_rate` may be at most this: the safety barrier's guarantee needs it
 /// ([`crate::safety`]).
@@ -262,12 +263,12 @@ impl Scenario {
                 ),
             );
         }
-        let fastest = p.k_a.max(p.k_omega);
+        let fastest = p.k_a.max(p.k_omega).max(p.k_v);
         if self.dt * fastest >= MAX_GAIN_STEP {
             return invalid(
                 "dt",
                 format!(
-                    "{} s is too large for the gains: dt · max(k_a, k_omega) must be below {MAX_GAIN_STEP} (use dt < {})",
+                    "{} s is too large for the gains: dt · max(k_a, k_omega, k_v) must be below {MAX_GAIN_STEP} (use dt < {})",
                     self.dt,
                     MAX_GAIN_STEP / fastest
                 ),

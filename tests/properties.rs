@@ -306,8 +306,9 @@ fn random_obstacle_fields_never_produce_non_finite_states() {
         }
         Ok(())
     });
-    // Recorded, not asserted: the paper proves avoidance for one obstacle at a time; where
-    // rings overlap, a robot may be trapped or cut into a disc without any state going wrong.
+    // Reaching the goal is recorded, not asserted: where rings overlap a robot may be trapped
+    // in a notch. Entering a disc is asserted: the safety barrier forbids it wherever the
+    // rings are.
     println!(
         "random obstacle fields: {}/{} runs reached the goal in 40 s; {} entered an obstacle \
          disc ({} of them with pairwise disjoint influence rings); smallest clearance {:.3} \
@@ -321,6 +322,107 @@ fn random_obstacle_fields_never_produce_non_finite_states() {
     );
     if let Err(e) = result {
         panic!("{e}");
+    }
+    assert_eq!(entered.get(), 0, "worst: {:?}", worst.borrow());
+}
+
+// ---------------------------------------------------------------------------------------------
+// The step function over arbitrary finite states.
+
+/// Cases of [`the_step_never_panics_nor_leaves_finite_numbers`]; the README quotes it.
+const STATE_CASES: u32 = 20_000;
+
+/// A finite number anywhere from round-off to the validation's magnitude limit, either sign.
+fn magnitude() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        -1e6..1e6f64,
+        -10.0..10.0f64,
+        (-12.0..6.0f64, any::<bool>())
+            .prop_map(|(e, neg)| if neg { -1.0 } else { 1.0 } * 10f64.powf(e)),
+        Just(0.0),
+    ]
+}
+
+/// A positive number from tiny to huge.
+fn positive() -> impl Strategy<Value = f64> {
+    prop_oneof![(-6.0..6.0f64).prop_map(|e| 10f64.powf(e)), 0.1..20.0f64]
+}
+
+prop_compose! {
+    fn any_state()(
+        robots in prop::collection::vec((magnitude(), magnitude(), magnitude(), magnitude(), magnitude(), magnitude()), 1..6),
+        obstacles in prop::collection::vec((magnitude(), magnitude(), positive(), positive()), 0..4),
+        gains in (positive(), positive(), positive(), positive(), positive()),
+        radii in (positive(), positive(), positive(), positive()),
+        saturation in (prop::option::of(positive()), prop::option::of(positive())),
+        dt in prop_oneof![Just(0.01), 1e-4..0.1f64],
+        paper in any::<bool>(),
+        barrier in any::<bool>(),
+    ) -> Scenario {
+        // Gains within the validation's bound `dt · k < 1`, so that most cases are valid.
+        let stable = |k: f64| k.min(0.99 / dt);
+        let (k_v, k_omega, k_a, eps, v_c) = gains;
+        let (k_v, k_omega, k_a) = (stable(k_v), stable(k_omega), stable(k_a));
+        let (r_c, r_ij, r_s, _) = radii;
+        let r_ij = r_ij.min(10.0);
+        Scenario {
+            name: "arbitrary state".into(),
+            bounds: None,
+            duration: 50.0 * dt,
+            dt,
+            params: Params {
+                k_v,
+                k_omega,
+                k_a,
+                transition_width: eps,
+                avoid_speed: v_c,
+                avoid_radius: r_c + r_ij,
+                safe_radius: r_ij,
+                sense_radius: r_s,
+                v_max: saturation.0,
+                omega_max: saturation.1,
+                avoidance: if paper { dvf::params::Avoidance::Paper } else { dvf::params::Avoidance::Exit },
+                barrier_rate: barrier.then_some(0.5 / dt),
+                ..Params::default()
+            },
+            independent: false,
+            robots: robots
+                .into_iter()
+                .map(|(x, y, t, gx, gy, gt)| RobotSpec { start: [x, y, t], goal: [gx, gy, gt] })
+                .collect(),
+            obstacles: obstacles
+                .into_iter()
+                .map(|(x, y, r, w)| Obstacle { center: DVec2::new(x, y), radius: r.min(20.0), influence: r.min(20.0) + w.min(20.0) })
+                .collect(),
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(Config { max_global_rejects: 20 * STATE_CASES, ..config(STATE_CASES) })]
+
+    /// Any state the validation accepts — poses and goals anywhere within its limits, any
+    /// gains, radii, saturation and step — steps without a panic, and every pose, command and
+    /// metric stays finite: no NaN or infinity leaves the core.
+    #[test]
+    fn the_step_never_panics_nor_leaves_finite_numbers(s in any_state()) {
+        prop_assume!(s.validate().is_ok());
+        let mut sim = Simulation::new(&s);
+        for _ in 0..s.steps() {
+            sim.step();
+            for r in sim.robots() {
+                let c = r.last.command;
+                prop_assert!(is_finite_pose(r.pose) && c.v.is_finite() && c.omega.is_finite()
+                    && r.last.field.is_finite() && r.heading_error.is_finite(),
+                    "{:?}", r);
+            }
+        }
+        let rep = sim.report();
+        prop_assert!(rep.min_pair_distance.is_none_or(f64::is_finite));
+        prop_assert!(rep.min_obstacle_clearance.is_none_or(f64::is_finite));
+        for r in &rep.robots {
+            prop_assert!(r.position_error.is_finite() && r.heading_error.is_finite());
+        }
     }
 }
 
@@ -597,8 +699,11 @@ fn check_parse(text: &str) -> Result<(), TestCaseError> {
     Ok(())
 }
 
+/// Cases of each parser property below; the README quotes it.
+const PARSER_CASES: u32 = 4_096;
+
 proptest! {
-    #![proptest_config(config(512))]
+    #![proptest_config(config(PARSER_CASES))]
 
     #[test]
     fn from_json_never_panics_on_arbitrary_text(text in any::<String>()) {
