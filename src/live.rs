@@ -166,7 +166,9 @@ impl Live {
         self.base_steps = 0;
         self.record_every = record_every(&self.scenario);
         let n = self.scenario.robots.len();
-        self.trails = vec![0.0; n * TRAIL_CAPACITY * POSE_STRIDE];
+        // Filled (NaN: not recorded yet) rather than zeroed: a zeroed allocation is committed
+        // page by page as the ring fills, which would look like growth in a long run.
+        self.trails = vec![f64::NAN; n * TRAIL_CAPACITY * POSE_STRIDE];
         self.trail_lens = vec![0; n];
         self.trail_head = 0;
         self.history_len = 0;
