@@ -15,6 +15,7 @@ fn main() {
 mod cli {
     use clap::{Args, Parser, Subcommand};
     use dvf::field::sample_grid;
+    use dvf::params::Avoidance;
     use dvf::presets::{preset, PRESETS};
     use dvf::scenario::Scenario;
     use dvf::sim::run_recorded;
@@ -72,6 +73,12 @@ mod cli {
             /// Obstacles per scenario, drawn from MIN..=MAX.
             #[arg(long, value_name = "MIN..=MAX", default_value = "0..=5", value_parser = parse_range)]
             obstacles: (usize, usize),
+            /// Robot avoidance: exit (the default) or paper.
+            #[arg(long, value_name = "MODE", default_value = "exit", value_parser = ["exit", "paper"])]
+            avoidance: String,
+            /// The safety barrier's rate α (1/s), or `none` to run without the barrier.
+            #[arg(long, value_name = "RATE|none", default_value = "5")]
+            barrier_rate: String,
             /// Write every failing scenario as DIR/seed-S.json.
             #[arg(long, value_name = "DIR")]
             write: Option<PathBuf>,
@@ -116,6 +123,19 @@ mod cli {
             return Err(format!("{text:?}: MIN is larger than MAX"));
         }
         Ok((a, b))
+    }
+
+    /// A positive barrier rate, or `none`.
+    fn parse_rate(text: &str) -> Result<Option<f64>, String> {
+        if text == "none" {
+            return Ok(None);
+        }
+        match text.parse::<f64>() {
+            Ok(r) if r.is_finite() && r > 0.0 => Ok(Some(r)),
+            _ => Err(format!(
+                "barrier-rate: expected a positive rate or none, not {text:?}"
+            )),
+        }
     }
 
     impl Source {
@@ -192,6 +212,8 @@ mod cli {
                 count,
                 robots,
                 obstacles,
+                avoidance,
+                barrier_rate,
                 write,
             } => {
                 if !(1..=MAX_SWEEP).contains(&count) {
@@ -212,11 +234,21 @@ mod cli {
                         obstacles.1
                     ));
                 }
-                let recipe = Recipe {
+                let mut recipe = Recipe {
                     robots: robots.0..=robots.1,
                     obstacles: obstacles.0..=obstacles.1,
                     ..Recipe::default()
                 };
+                recipe.params.avoidance = if avoidance == "paper" {
+                    Avoidance::Paper
+                } else {
+                    Avoidance::Exit
+                };
+                recipe.params.barrier_rate = parse_rate(&barrier_rate)?;
+                // The parameters are the same for every scenario: check them once.
+                if let Some(first) = dvf::sweep::random_scenario(&recipe, seed) {
+                    first.validate().map_err(|e| e.to_string())?;
+                }
                 if let Some(dir) = &write {
                     std::fs::create_dir_all(dir)
                         .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
