@@ -50,6 +50,8 @@ const UNDO_LIMIT = 200;
 const DEFAULT_THETA0_DEG = 90;
 /** A new obstacle's radius as a fraction of the view's smaller side; its ring is twice that. */
 const NEW_OBSTACLE_FRACTION = 0.05;
+/** Candidate spots tried, along a spiral about the view's centre, for a new robot. */
+const ADD_ROBOT_TRIES = 400;
 
 const TEMPLATE = `
 <link rel="stylesheet" href="${new URL('playground.css', import.meta.url)}">
@@ -1042,7 +1044,25 @@ export class DvfPlayground extends HTMLElement {
     const y = view.wy(view.height / 2);
     const n = this.cache.scenario.robots.length;
     const ok = this.edit((s) => {
-      s.robots.push({ start: [x - 0.2 * span, y - 0.1 * span, 0], goal: [x + 0.2 * span, y + 0.1 * span, 0] });
+      // The first start/goal pair along a widening spiral about the view's centre that keeps
+      // clear of every robot and obstacle ring, so that repeated clicks add robots side by
+      // side instead of one on top of another (which the core refuses).
+      const gap = 3 * (s.params?.safe_radius ?? 1);
+      const free = (p, key, ring) => s.robots.every((r) => Math.hypot(r[key][0] - p[0], r[key][1] - p[1]) >= gap)
+        && s.obstacles.every((o) => Math.hypot(o.center[0] - p[0], o.center[1] - p[1]) > (ring ? o.influence : o.radius) + gap);
+      let start = [x - 0.2 * span, y - 0.1 * span];
+      let goal = [x + 0.2 * span, y + 0.1 * span];
+      for (let k = 0; k < ADD_ROBOT_TRIES; k++) {
+        const a = k * 2.4; // radians: the golden angle spreads the tries evenly
+        const r = gap * Math.sqrt(k);
+        const s0 = [x - 0.2 * span + r * Math.cos(a), y - 0.1 * span + r * Math.sin(a)];
+        const g0 = [x + 0.2 * span + r * Math.cos(a), y + 0.1 * span + r * Math.sin(a)];
+        if (free(s0, 'start', false) && free(g0, 'goal', true)) {
+          [start, goal] = [s0, g0];
+          break;
+        }
+      }
+      s.robots.push({ start: [...start, 0], goal: [...goal, 0] });
     }, 'add-robot');
     if (ok) {
       this.selection = { kind: 'robot', index: n };
