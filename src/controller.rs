@@ -160,6 +160,8 @@ where
         motion,
         field: gp,
         to_goal,
+        // err.p = R(θ_d)ᵀ(p − p_d) with θ_d = θ − θ̃.
+        goal: pose.p - rotate(theta - err.theta, err.p),
         speed,
     };
     let vo = cluster(
@@ -175,6 +177,7 @@ where
             let s = transition(c.distance, params.avoid_radius, eps);
             // Let go of a neighbour whose safe disc is farther than the goal (Exit only).
             let go = c.clearance.map_or(0.0, |cl| goal_first(cl, to_goal, eps));
+            let go = 1.0 - (1.0 - go) * (1.0 - c.aside);
             let side = c.at_rest.then_some(gp);
             (c.center, 1.0 - (1.0 - s) * (1.0 - go), side)
         })

@@ -35,6 +35,9 @@ pub struct Cluster {
     /// ([`crate::obstacle::goal_first`]), when the goal is nearer than that. `None` for the
     /// paper's avoidance.
     pub clearance: Option<f64>,
+    /// [`Avoidance::Exit`]: how far a neighbour at rest stands aside of the robot's way
+    /// (0: in the way, 1: clear); the controller lets it go by as much. 0 for the paper.
+    pub aside: f64,
     /// [`Avoidance::Exit`]: the neighbour is at rest next to the robot (it moves at most a
     /// tenth as fast), so the robot goes round it on the side of its own field, as round an
     /// obstacle, rather than by the turn-left rule meant for two robots that both give way.
@@ -56,6 +59,8 @@ pub struct Approach {
     pub field: DVec2,
     /// Its distance to its goal position.
     pub to_goal: f64,
+    /// Its goal position.
+    pub goal: DVec2,
     /// Its speed `|v_i|` (m/s).
     pub speed: f64,
 }
@@ -91,17 +96,18 @@ pub fn cluster(
     let in_range = neighbours
         .into_iter()
         .filter(move |n| n.position.distance(p_i) <= range);
-    let (center, clearance, at_rest) = match avoidance {
+    let (center, clearance, at_rest, aside) = match avoidance {
         Avoidance::Paper => (
             virtual_obstacle(p_i, in_range.map(|n| n.position))?,
             None,
             false,
+            0.0,
         ),
         Avoidance::Exit => {
             let nearest = in_range
                 .filter(|n| {
                     let to = n.position - p_i;
-                    me.motion.dot(to) > 0.0 && me.field.dot(to) > 0.0
+                    me.motion.dot(to) > 0.0 && me.field.dot(to) > 0.0 && aside(me, *n, safe) < 1.0
                 })
                 .min_by(|a, b| {
                     a.position
@@ -111,7 +117,8 @@ pub fn cluster(
             (
                 virtual_obstacle_between(p_i, me.speed, nearest),
                 Some(nearest.position.distance(p_i) - safe),
-                nearest.speed + SPEED_FLOOR <= AT_REST_RATIO * (me.speed + SPEED_FLOOR),
+                self::at_rest(me, nearest),
+                self::aside(me, nearest, safe),
             )
         }
     };
@@ -120,7 +127,42 @@ pub fn cluster(
         distance: p_i.distance(center),
         clearance,
         at_rest,
+        aside,
     })
+}
+
+/// A neighbour at rest is avoided only if it stands within this many safe distances of the
+/// straight way to the goal: one beside the way is no obstacle, and circling it would keep a
+/// robot from a goal that lies between parked neighbours (a slot in a crowded formation).
+pub const BLOCKING: f64 = 1.5;
+
+/// Whether `n` is at rest next to the robot `me` (see [`Cluster::at_rest`]).
+fn at_rest(me: Approach, n: Neighbour) -> bool {
+    n.speed + SPEED_FLOOR <= AT_REST_RATIO * (me.speed + SPEED_FLOOR)
+}
+
+/// How far a neighbour at rest stands aside of the straight way to the goal, as a transition
+/// from 0 (within `safe` of the segment from the robot to its goal: in the way) to 1 (beyond
+/// `BLOCKING·safe`: clear). Always 0 for a neighbour that moves. Smooth, so that a robot near
+/// the border does not chatter between circling and not circling.
+fn aside(me: Approach, n: Neighbour, safe: f64) -> f64 {
+    if !at_rest(me, n) {
+        return 0.0;
+    }
+    let way = segment_distance(n.position, me.position, me.goal);
+    crate::obstacle::transition(way, safe, (BLOCKING - 1.0) * safe)
+}
+
+/// Distance from `q` to the segment from `a` to `b`.
+#[must_use]
+pub fn segment_distance(q: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let ab = b - a;
+    let t = if ab == DVec2::ZERO {
+        0.0
+    } else {
+        ((q - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+    };
+    q.distance(a + t * ab)
 }
 
 /// The point that robot `i` at `p_i` moving at `speed` and the neighbour `n` circle together:
@@ -215,6 +257,7 @@ mod tests {
             motion: DVec2::X,
             field: DVec2::X,
             to_goal: 20.0,
+            goal: DVec2::new(20.0, 0.0),
             speed: 1.0,
         };
         // Paper: the centroid of all five, behind the robot.
@@ -237,6 +280,55 @@ mod tests {
         assert_eq!(c.clearance, Some(1.0));
         let c = cluster(me, all, 8.0, 1.0, Avoidance::Paper).unwrap();
         assert_eq!(c.clearance, None);
+    }
+
+    /// A neighbour at rest beside the straight way to the goal is let go (a slot between
+    /// parked robots can be reached); one in the way is not; a moving one never is.
+    #[test]
+    fn a_parked_neighbour_aside_of_the_way_is_let_go() {
+        let me = Approach {
+            position: DVec2::ZERO,
+            motion: DVec2::X,
+            field: DVec2::X,
+            to_goal: 10.0,
+            goal: DVec2::new(10.0, 0.0),
+            speed: 2.0,
+        };
+        let parked = |y: f64| Neighbour {
+            position: DVec2::new(5.0, y),
+            speed: 0.0,
+        };
+        let safe = 2.0;
+        let c = |y| cluster(me, [parked(y)], 8.0, safe, Avoidance::Exit).unwrap();
+        assert_eq!(c(0.5).aside, 0.0); // in the way
+        assert_eq!(c(2.0).aside, 0.0); // exactly the safe distance from the way
+        assert!(c(2.5).aside > 0.0 && c(2.5).aside < 1.0); // the smooth band
+        assert!(cluster(me, [parked(3.0)], 8.0, safe, Avoidance::Exit).is_none()); // clear
+        let moving = Neighbour {
+            speed: 2.0,
+            ..parked(3.0)
+        };
+        assert_eq!(
+            cluster(me, [moving], 8.0, safe, Avoidance::Exit)
+                .unwrap()
+                .aside,
+            0.0
+        );
+        assert_close!(
+            segment_distance(DVec2::new(5.0, 3.0), DVec2::ZERO, me.goal),
+            3.0,
+            0.0
+        );
+        assert_close!(
+            segment_distance(DVec2::new(13.0, 4.0), DVec2::ZERO, me.goal),
+            5.0,
+            0.0
+        );
+        assert_close!(
+            segment_distance(DVec2::new(1.0, 1.0), DVec2::ZERO, DVec2::ZERO),
+            2f64.sqrt(),
+            0.0
+        );
     }
 
     /// A neighbour at rest is circled about itself, one moving alike about the midpoint.

@@ -27,11 +27,13 @@ fn assert_kept(name: &str, report: &Report) {
     }
 }
 
-/// Antipodal swaps of 2 … 24 robots on the paper's circle (radius 20) and on a wider one:
-/// all robots of a swap meet in the middle at once, the hardest case for a cluster.
+/// Antipodal swaps of 2 … 24 robots on the paper's circle (radius 20), on a wider one, and on
+/// the narrowest that keeps 24 goals `3·r_ij` apart (radius 12): all robots of a swap meet in
+/// the middle at once, the hardest case for a cluster, and on the narrow circle each robot
+/// must then slip into a slot between robots already parked.
 #[test]
 fn antipodal_circle_swaps_of_2_to_24_robots_all_arrive() {
-    for radius in [20.0, 30.0] {
+    for radius in [12.0, 20.0, 30.0] {
         for n in 2..=24 {
             let s = circle_swap(n, radius);
             assert_kept(&s.name, &run(&s));
