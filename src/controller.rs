@@ -159,7 +159,6 @@ where
         position: pose.p,
         motion,
         field: gp,
-        to_goal,
         // err.p = R(θ_d)ᵀ(p − p_d) with θ_d = θ − θ̃.
         goal: pose.p - rotate(theta - err.theta, err.p),
         speed,

@@ -153,12 +153,13 @@ where
         // Exit: an obstacle the robot moves away from has no say (ς = 1), which for one
         // obstacle is the paper's `Γ_o = Γ̃_d` and for several keeps such an obstacle's
         // `(1 − ς)·Γ̃_d` from outweighing the ring of another that the robot is entering.
-        if exit.is_some() && classify(motion, gamma_r) == Approach::Clear {
+        let approach = classify(motion, gamma_r);
+        if exit.is_some() && approach == Approach::Clear {
             continue;
         }
         if s < 1.0 {
             keep *= s;
-            let field = match (sense, classify(motion, gamma_r)) {
+            let field = match (sense, approach) {
                 (Some(sigma), Approach::Tangent | Approach::HeadOn) => sigma * gamma_r.perp(),
                 _ => avoidance_field(gamma_r, motion, goal_field),
             };

@@ -57,8 +57,6 @@ pub struct Approach {
     pub motion: DVec2,
     /// The field it would follow without robots to avoid (`Γ_P`, world frame).
     pub field: DVec2,
-    /// Its distance to its goal position.
-    pub to_goal: f64,
     /// Its goal position.
     pub goal: DVec2,
     /// Its speed `|v_i|` (m/s).
@@ -256,7 +254,6 @@ mod tests {
             position: DVec2::ZERO,
             motion: DVec2::X,
             field: DVec2::X,
-            to_goal: 20.0,
             goal: DVec2::new(20.0, 0.0),
             speed: 1.0,
         };
@@ -290,7 +287,6 @@ mod tests {
             position: DVec2::ZERO,
             motion: DVec2::X,
             field: DVec2::X,
-            to_goal: 10.0,
             goal: DVec2::new(10.0, 0.0),
             speed: 2.0,
         };
