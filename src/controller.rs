@@ -21,6 +21,12 @@
 //! neighbour gives eq. `eq_nonholo_controller`, obstacles only give
 //! eq. `eq_nonholo_controller_ob_avoid`, neighbours only give
 //! eq. `eq_nonholo_controller_co_avoid`.
+//!
+//! With `"avoidance": "exit"` (the default) an obstacle or neighbour farther than the goal is
+//! let go: `ς` is raised to `1 − (1 − ς)(1 − g)` with `g` from
+//! [`crate::obstacle::goal_first`] (and, for a neighbour at rest, by how far it stands aside of
+//! the way); see [`crate::obstacle::blend`] and [`crate::swarm::cluster`]. The speed is then
+//! made safe by [`crate::safety::filter`] in the simulator.
 
 use crate::field::goal_field_body;
 use crate::obstacle::{blend, goal_first, transition, Obstacle};

@@ -1,10 +1,13 @@
 //! Collision avoidance among robots through a virtual obstacle (Section V, eqs.
 //! `eq_tilde_p_o`, `eq_Gamma_r_co_avoid`, `eq_Gamma_r_perp_co_avoid`, `DVF_Gamma_Qi`).
 //!
-//! A robot that has neighbours closer than the avoidance range places a virtual obstacle at
-//! the centroid of itself and those neighbours (the midpoint for two robots) and circles it
-//! along `Γ_ri⊥`, the tangent whose projection on its own body Y axis is positive: every robot
-//! turns left, so that the two robots of a pair circle their midpoint the same way.
+//! A robot that has neighbours closer than the avoidance range places a virtual obstacle and
+//! circles it along `Γ_ri⊥`, the tangent whose projection on its own body Y axis is positive:
+//! every robot turns left, so that the two robots of a pair circle their midpoint the same
+//! way. With [`Avoidance::Paper`] the virtual obstacle is the centroid of the robot and all
+//! those neighbours (the midpoint for two robots); with [`Avoidance::Exit`] it lies between
+//! the robot and the one neighbour it is heading for, and the robot leaves the ring once its
+//! motion or its field no longer leads to that neighbour ([`cluster`]).
 
 use crate::params::Avoidance;
 use crate::se2::heading;
