@@ -27,6 +27,7 @@ export const PARAMETERS = [
   ['sense_radius', 'R_s', 'm', 'sensing radius'],
   ['v_max', 'v_max', 'm/s', 'speed saturation (empty: none)', true],
   ['omega_max', 'ω_max', 'rad/s', 'turn-rate saturation (empty: none)', true],
+  ['barrier_rate', 'α', '1/s', 'safety barrier: a gap to a safe disc or an obstacle shrinks by at most α·dt per step (empty: off, the paper alone)', true],
 ];
 
 function el(tag, text, className) {
