@@ -264,6 +264,25 @@ impl Live {
                 goal: r.goal,
             };
         }
+        // The safe distance is a promise: an edit may not put two robots inside each
+        // other's safe disc where they are now (at t = 0 the scenario's validation says so).
+        let safe = 2.0 * from.params.safe_radius;
+        if !from.independent {
+            for (j, b) in now.iter().enumerate().take(from.robots.len()) {
+                for (i, a) in now[..j].iter().enumerate() {
+                    let d = a.p.distance(b.p);
+                    if d < safe {
+                        return Err(Error::Invalid {
+                            field: format!("robots[{j}]"),
+                            message: format!(
+                                "would be {d:.3} from robots[{i}] where they are now, at t = {:.2} s: closer than the safe distance 2 · safe_radius = {safe}",
+                                self.time()
+                            ),
+                        });
+                    }
+                }
+            }
+        }
         let time = self.time();
         let steps = self.steps();
         let old_n = self.scenario.robots.len();
@@ -274,7 +293,8 @@ impl Live {
         self.scenario = scenario;
         if n != old_n {
             // Robots keep their index; removed ones drop off the end, added ones start empty.
-            self.trails.resize(n * TRAIL_CAPACITY * POSE_STRIDE, 0.0);
+            self.trails
+                .resize(n * TRAIL_CAPACITY * POSE_STRIDE, f64::NAN);
             self.trail_lens.resize(n, 0);
         }
         self.record_every = record_every(&self.scenario);
@@ -751,6 +771,16 @@ mod tests {
             .to_string();
         assert!(
             e.starts_with("robots[0]: would be inside obstacles[0]"),
+            "{e}"
+        );
+        // Onto the other robot, at t > 0: inside its safe disc.
+        let other = live.simulation().robots()[1].pose;
+        let e = live
+            .move_robot(0, Pose::new(other.p.x + 0.5, other.p.y, 0.0))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("robots[1]: would be 0.500 from robots[0]"),
             "{e}"
         );
         let mut s = live.scenario().clone();
