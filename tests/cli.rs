@@ -748,3 +748,63 @@ fn bad_command_lines_are_rejected() {
 fn simulate_without_a_source_names_what_is_missing() {
     assert_rejected(&["simulate"], &["FILE"]);
 }
+
+// ---------------------------------------------------------------------------------------------
+// sweep
+
+/// `dvf sweep` prints one summary whose counts add up, whose failures are reproducible by
+/// seed, and refuses bad ranges, counts and rates with one line.
+#[test]
+fn sweep_summarises_random_scenarios_and_refuses_bad_options() {
+    let v = dvf_json(&["sweep", "--seed", "7", "--count", "5", "--robots", "3..=4"]);
+    assert_eq!(
+        keys(&v),
+        [
+            "converged",
+            "convergence_time",
+            "failures",
+            "robots",
+            "scenarios",
+            "seed",
+            "skipped",
+            "success_rate",
+            "violations"
+        ]
+    );
+    assert_eq!(
+        num(&v["scenarios"]) as usize + num(&v["skipped"]) as usize,
+        5
+    );
+    let robots = num(&v["robots"]);
+    assert!((15.0..=20.0).contains(&robots), "{robots}");
+    assert_eq!(num(&v["success_rate"]), num(&v["converged"]) / robots);
+    let q = &v["convergence_time"];
+    assert!(num(&q["min"]) <= num(&q["p50"]) && num(&q["p50"]) <= num(&q["max"]));
+    // The same seed gives the same summary.
+    assert_eq!(
+        v,
+        dvf_json(&["sweep", "--seed", "7", "--count", "5", "--robots", "3..=4"])
+    );
+    // Without the barrier and with the paper's avoidance the options reach the scenarios.
+    let paper = dvf_json(&[
+        "sweep",
+        "--seed",
+        "7",
+        "--count",
+        "5",
+        "--robots",
+        "3..=4",
+        "--avoidance",
+        "paper",
+        "--barrier-rate",
+        "none",
+    ]);
+    assert_ne!(paper, v);
+
+    assert_rejected(&["sweep", "--count", "0"], &["count"]);
+    assert_rejected(&["sweep", "--robots", "5..=2"], &["MIN is larger than MAX"]);
+    assert_rejected(&["sweep", "--robots", "0..=2"], &["robots"]);
+    assert_rejected(&["sweep", "--barrier-rate", "-1"], &["barrier-rate"]);
+    assert_rejected(&["sweep", "--barrier-rate", "80"], &["dt", "barrier_rate"]);
+    assert_rejected(&["sweep", "--avoidance", "orbit"], &["orbit"]);
+}

@@ -77,7 +77,12 @@ mod cli {
             #[arg(long, value_name = "MODE", default_value = "exit", value_parser = ["exit", "paper"])]
             avoidance: String,
             /// The safety barrier's rate α (1/s), or `none` to run without the barrier.
-            #[arg(long, value_name = "RATE|none", default_value = "5")]
+            #[arg(
+                long,
+                value_name = "RATE|none",
+                default_value = "5",
+                allow_hyphen_values = true
+            )]
             barrier_rate: String,
             /// Write every failing scenario as DIR/seed-S.json.
             #[arg(long, value_name = "DIR")]
