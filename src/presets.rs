@@ -183,6 +183,32 @@ pub fn circle_swap(n: usize, radius: f64) -> Scenario {
     }
 }
 
+/// Neighbouring starts of a [`crowd`] are this many safe radii `r_ij` apart.
+pub const CROWD_SPACING: f64 = 4.0;
+
+/// The most robots a [`crowd`] is meant for (the page's limit; the builder takes any `n`).
+pub const CROWD_MAX: usize = 10_000;
+
+/// A crowd of `n` robots swapping antipodally on a circle, headings kept ([`circle_swap`]), at
+/// constant density: the circle grows with `n` so that neighbouring starts stay
+/// [`CROWD_SPACING`]`·r_ij` apart (chord `2R·sin(π/n)`), so a robot senses about as many
+/// neighbours at the start whatever `n`. The scenario of `dvf bench`. Default parameters,
+/// 120 s (a large crowd is still on its way then: at `n = 10 000` the circle's radius is
+/// about 6 400).
+#[must_use]
+pub fn crowd(n: usize) -> Scenario {
+    let spacing = CROWD_SPACING * Params::default().safe_radius;
+    let radius = if n < 2 {
+        0.5 * spacing
+    } else {
+        spacing / (2.0 * (PI / n as f64).sin())
+    };
+    Scenario {
+        name: format!("crowd of {n}: antipodal swap on a circle of radius {radius:.1}"),
+        ..circle_swap(n, radius)
+    }
+}
+
 /// `n` robots in a vertical line at `x = −20`, `spacing` apart and facing east, swap to the
 /// line at `x = 20` in reversed order (Example 3, scenario 1, for any `n`). 120 s, default
 /// parameters.
@@ -249,6 +275,21 @@ mod tests {
     // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    /// Neighbouring starts stay `CROWD_SPACING·r_ij` apart whatever the crowd's size, and the
+    /// scenario is valid.
+    #[test]
+    fn a_crowd_keeps_its_density() {
+        for n in [2, 3, 10, 1000, CROWD_MAX] {
+            let s = crowd(n);
+            let (a, b) = (s.robots[0].start_pose().p, s.robots[1].start_pose().p);
+            crate::approx::assert_close!(a.distance(b), CROWD_SPACING, 1e-9);
+            assert_eq!(s.robots.len(), n);
+            if n <= 1000 {
+                s.validate().unwrap();
+            }
+        }
+    }
 
     #[test]
     fn every_preset_is_valid_and_named_uniquely() {
