@@ -7,32 +7,47 @@
 //! that reach puts every robot's neighbours in its own cell and the eight around it, so a step
 //! looks at a bounded number of candidates per robot instead of all `N − 1`.
 //!
-//! The cells are counting-sorted arrays (a start per cell, robot indices in cell order), so a
-//! rebuild allocates nothing once the buffers have grown to the swarm's size. Each cell lists its
-//! robots in ascending index, and a robot's candidates are merged from its (at most nine) cells
-//! in ascending index: the neighbours reach the controller in the same order as a scan of all
+//! The cells are hashed into a table of counting-sorted arrays (a start per bucket, robot
+//! indices in bucket order), so a rebuild allocates nothing once the buffers have grown to the
+//! swarm's size. The lists come out in ascending index (see [`Neighbours::build`] for
+//! how, without a sort): the neighbours reach the controller in the same order as a scan of all
 //! robots, so sums over them (the centroid of eq. `eq_tilde_p_o`) give the same bits.
 
 use glam::DVec2;
 
-/// At most this many cells per robot: a swarm spread far apart compared with the reach gets
-/// larger cells rather than a grid of mostly empty ones (memory stays O(N)).
-const CELLS_PER_ROBOT: usize = 4;
+/// Cells are this much wider than the reach, so that rounding in `x / cell` cannot put two
+/// robots within reach more than one cell apart (see [`MAX_CELL_COORDINATE`]).
+const CELL_MARGIN: f64 = 1e-6;
+
+/// Cell coordinates stay below this: the rounding error of `x / cell` (about
+/// `|x / cell|·2⁻⁵³ ≤ 1.2·10⁻⁷` cell widths) is then far below [`CELL_MARGIN`]. Scenario
+/// coordinates are at most 10⁷ ([`crate::scenario::MAX_BOUNDS`]), so only a reach below 0.01
+/// gets wider cells from this.
+const MAX_CELL_COORDINATE: f64 = 1e9;
 
 /// The robots within `reach` of each robot, as flat per-robot lists (compressed rows).
 ///
 /// After [`Neighbours::build`], [`Neighbours::of`]`(i)` holds the indices `j ≠ i` with
 /// `|p_j − p_i|² ≤ reach²`, ascending. The same predicate as a scan over all pairs, so the two
 /// give the same sets.
+///
+/// The grid is unbounded: cell `(cx, cy)` goes to bucket `hash(cx, cy)` of a table of about
+/// `2N` buckets, so memory and time stay O(N) however sparse the swarm (a crowd on a circle
+/// leaves the disc inside empty). Two cells that share a bucket only add candidates, which the
+/// distance test drops.
 #[derive(Clone, Debug, Default)]
 pub struct Neighbours {
-    // The grid: robot `i` lies in cell `cell_of[i]`; cell `c` lists `order[start[c]..start[c + 1]]`.
-    cell_of: Vec<u32>,
+    // The table: robot `i` lies in bucket `bucket_of[i]`; bucket `b` lists
+    // `order[start[b]..start[b + 1]]`, in ascending robot index.
+    bucket_of: Vec<u32>,
     start: Vec<u32>,
     order: Vec<u32>,
-    // The lists: robot `i`'s neighbours are `list[first[i]..first[i + 1]]`.
+    // The lists: robot `i`'s neighbours are `list[first[i]..first[i + 1]]`; `hits` holds the
+    // same rows in bucket order, `cursor` is the fill position of each row.
     first: Vec<u32>,
     list: Vec<u32>,
+    hits: Vec<u32>,
+    cursor: Vec<u32>,
 }
 
 impl Neighbours {
@@ -42,97 +57,105 @@ impl Neighbours {
         Self::default()
     }
 
-    /// Rebuilds the lists for robots at `positions` and a `reach > 0` (scenario units).
-    /// Reuses the buffers: after the first call with as many robots, it allocates only when a
-    /// list total grows past its previous maximum.
+    /// Rebuilds the lists for the `n` robots at `positions(0..n)` and a `reach` (scenario
+    /// units). Reuses the buffers: after the first call with as many robots, it allocates only
+    /// when the lists' total grows past its previous maximum.
     ///
-    /// Non-finite positions all land in one cell and are never anybody's neighbour (their
-    /// distance is not `≤ reach`), as in a scan over all pairs.
+    /// A non-finite position is nobody's neighbour (its distance is not `≤ reach`), as in a
+    /// scan over all pairs.
     pub fn build(&mut self, positions: impl Fn(usize) -> DVec2, n: usize, reach: f64) {
-        let (lo, hi) = extent((0..n).map(&positions));
-        let span = hi - lo;
-        // Cells no smaller than the reach (so the 3×3 block around a robot holds every robot
-        // within reach), and no more than CELLS_PER_ROBOT per robot.
-        let cap = (CELLS_PER_ROBOT * n).max(1) as f64;
-        let mut cell = reach.max(f64::MIN_POSITIVE);
-        if (span.x / cell + 1.0) * (span.y / cell + 1.0) > cap {
-            cell = cell
-                .max((span.x * span.y / cap).sqrt())
-                .max(span.x.max(span.y) / cap);
-        }
-        let cols = dim(span.x / cell);
-        let rows = dim(span.y / cell);
-        let index = |p: DVec2| -> (usize, usize) {
-            let d = (p - lo) / cell;
-            // `as` saturates (NaN → 0): a non-finite position gets a valid cell.
-            ((d.x as usize).min(cols - 1), (d.y as usize).min(rows - 1))
+        let far = (0..n)
+            .map(&positions)
+            .filter(|p| p.is_finite())
+            .fold(0.0_f64, |m, p| m.max(p.abs().max_element()));
+        let cell = (reach * (1.0 + CELL_MARGIN))
+            .max(far / MAX_CELL_COORDINATE)
+            .max(f64::MIN_POSITIVE);
+        // A power of two at least 2N: few cells share a bucket.
+        let bits = (2 * n.max(1)).next_power_of_two().trailing_zeros();
+        let buckets = 1usize << bits;
+        let coords = |p: DVec2| -> (i64, i64) {
+            // `as` saturates (NaN → 0, ±∞ → the extremes): every position gets a cell.
+            ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64)
+        };
+        let bucket = |(cx, cy): (i64, i64)| -> usize {
+            let h = (cx as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+                ^ (cy as u64).wrapping_mul(0xC2B2_AE3D_27D4_EB4F);
+            let h = (h ^ (h >> 29)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            // The high bits are the best mixed; `bits ≥ 1`.
+            (h >> (64 - bits)) as usize
         };
 
-        // Counting sort into cells, in ascending robot index within each cell.
-        let cells = cols * rows;
+        // Counting sort into buckets, in ascending robot index within each bucket.
         self.start.clear();
-        self.start.resize(cells + 1, 0);
-        self.cell_of.clear();
+        self.start.resize(buckets + 1, 0);
+        self.bucket_of.clear();
         for i in 0..n {
-            let (cx, cy) = index(positions(i));
-            let c = cy * cols + cx;
-            self.cell_of.push(c as u32);
-            self.start[c + 1] += 1;
+            let b = bucket(coords(positions(i)));
+            self.bucket_of.push(b as u32);
+            self.start[b + 1] += 1;
         }
-        for c in 0..cells {
-            self.start[c + 1] += self.start[c];
+        for b in 0..buckets {
+            self.start[b + 1] += self.start[b];
         }
         self.order.clear();
         self.order.resize(n, 0);
-        // `first` serves as the fill cursor of each cell before it takes its own meaning.
-        self.first.clear();
-        self.first.extend_from_slice(&self.start[..cells]);
-        for (i, &c) in self.cell_of.iter().enumerate() {
-            let slot = &mut self.first[c as usize];
+        self.cursor.clear();
+        self.cursor.extend_from_slice(&self.start[..buckets]);
+        for (i, &b) in self.bucket_of.iter().enumerate() {
+            let slot = &mut self.cursor[b as usize];
             self.order[*slot as usize] = i as u32;
             *slot += 1;
         }
 
-        // Each robot's list: a merge of the ascending lists of the cells around it.
+        // The hits of each robot, in bucket order: the robots within reach among the 3 × 3
+        // cells around it (a robot within reach is at most one cell away along each axis).
         let reach2 = reach * reach;
         self.first.clear();
-        self.list.clear();
+        self.hits.clear();
         for i in 0..n {
-            self.first.push(self.list.len() as u32);
+            self.first.push(self.hits.len() as u32);
             let p = positions(i);
-            let c = self.cell_of[i] as usize;
-            let (cx, cy) = (c % cols, c / cols);
+            let (cx, cy) = coords(p);
             let mut runs = [(0u32, 0u32); 9];
             let mut k = 0;
-            for y in cy.saturating_sub(1)..=(cy + 1).min(rows - 1) {
-                for x in cx.saturating_sub(1)..=(cx + 1).min(cols - 1) {
-                    let c = y * cols + x;
-                    if self.start[c] < self.start[c + 1] {
-                        runs[k] = (self.start[c], self.start[c + 1]);
+            for dy in -1..=1_i64 {
+                for dx in -1..=1_i64 {
+                    let b = bucket((cx.wrapping_add(dx), cy.wrapping_add(dy)));
+                    let run = (self.start[b], self.start[b + 1]);
+                    // Cells that share a bucket share its run: visit it once.
+                    if run.0 < run.1 && !runs[..k].contains(&run) {
+                        runs[k] = run;
                         k += 1;
                     }
                 }
             }
-            let runs = &mut runs[..k];
-            loop {
-                // The smallest head among the runs (at most nine: a linear scan).
-                let mut best: Option<(usize, u32)> = None;
-                for (r, &(at, end)) in runs.iter().enumerate() {
-                    if at < end {
-                        let j = self.order[at as usize];
-                        if best.map_or(true, |(_, b)| j < b) {
-                            best = Some((r, j));
-                        }
+            for &(from, to) in &runs[..k] {
+                for &j in &self.order[from as usize..to as usize] {
+                    if j as usize != i && positions(j as usize).distance_squared(p) <= reach2 {
+                        self.hits.push(j);
                     }
-                }
-                let Some((r, j)) = best else { break };
-                runs[r].0 += 1;
-                if j as usize != i && positions(j as usize).distance_squared(p) <= reach2 {
-                    self.list.push(j);
                 }
             }
         }
-        self.first.push(self.list.len() as u32);
+        self.first.push(self.hits.len() as u32);
+
+        // Ascending order without a sort: "within reach" is symmetric (the squared distance
+        // of a pair is the same bits either way round), so robot `j`'s row holds exactly the
+        // robots `i` whose rows hold `j`. Scattering each `i` into the rows of its hits, for
+        // `i` ascending, fills every row in ascending order; the rows keep their lengths.
+        self.list.clear();
+        self.list.resize(self.hits.len(), 0);
+        self.cursor.clear();
+        self.cursor.extend_from_slice(&self.first[..n]);
+        for i in 0..n {
+            let (a, b) = (self.first[i] as usize, self.first[i + 1] as usize);
+            for &j in &self.hits[a..b] {
+                let slot = &mut self.cursor[j as usize];
+                self.list[*slot as usize] = i as u32;
+                *slot += 1;
+            }
+        }
     }
 
     /// Robot `i`'s neighbours, ascending (empty before the first build or for `i` out of range).
@@ -143,27 +166,6 @@ impl Neighbours {
             _ => &[],
         }
     }
-}
-
-/// The bounding box of the finite points (`(0, 0)` twice when there are none).
-fn extent(points: impl Iterator<Item = DVec2>) -> (DVec2, DVec2) {
-    let mut lo = DVec2::splat(f64::INFINITY);
-    let mut hi = DVec2::splat(f64::NEG_INFINITY);
-    for p in points.filter(|p| p.is_finite()) {
-        lo = lo.min(p);
-        hi = hi.max(p);
-    }
-    if lo.x > hi.x {
-        (DVec2::ZERO, DVec2::ZERO)
-    } else {
-        (lo, hi)
-    }
-}
-
-/// Cells along a side of `span_cells` cell widths (at least one).
-fn dim(span_cells: f64) -> usize {
-    // Saturating `as`; bounded by CELLS_PER_ROBOT·N through the cell size.
-    (span_cells as usize).saturating_add(1).max(1)
 }
 
 #[cfg(test)]
@@ -195,7 +197,13 @@ mod tests {
             s ^= s >> 27;
             (s.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
         };
-        for (n, side, reach) in [(300, 100.0, 7.0), (50, 1e6, 3.0), (80, 5.0, 20.0)] {
+        for (n, side, reach) in [
+            (300, 100.0, 7.0),
+            (50, 1e6, 3.0),
+            (80, 5.0, 20.0),
+            (400, 1e7, 1e-3),
+            (200, 50.0, 0.5),
+        ] {
             let points: Vec<DVec2> = (0..n)
                 .map(|_| DVec2::new(next() * side, next() * side))
                 .collect();

@@ -209,6 +209,24 @@ pub fn crowd(n: usize) -> Scenario {
     }
 }
 
+/// A [`crowd`] of `n` robots with `m` obstacles (`r_o = 1`, `R_o = 3`) evenly spaced on the
+/// circle of half its radius, which the robots cross on their way to the antipodes: the
+/// scenario of `dvf bench --obstacles M`. Meant for `n ≥ 10` (a smaller crowd's goals lie in
+/// the obstacles' rings).
+#[must_use]
+pub fn crowd_with_obstacles(n: usize, m: usize) -> Scenario {
+    let mut s = crowd(n);
+    let half = 0.5 * s.robots.first().map_or(0.0, |r| r.start_pose().p.length());
+    s.obstacles = (0..m)
+        .map(|k| Obstacle {
+            center: half * DVec2::from_angle(2.0 * PI * (k as f64 + 0.5) / m as f64),
+            radius: 1.0,
+            influence: 3.0,
+        })
+        .collect();
+    s
+}
+
 /// `n` robots in a vertical line at `x = −20`, `spacing` apart and facing east, swap to the
 /// line at `x = 20` in reversed order (Example 3, scenario 1, for any `n`). 120 s, default
 /// parameters.

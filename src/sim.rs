@@ -149,6 +149,7 @@ pub struct Simulation {
     neighbourhood: Neighbourhood,
     // Scratch, reused every step.
     near: Neighbours,
+    positions: Vec<DVec2>,
     commands: Vec<Command>,
     neighbours: Vec<Neighbour>,
     speeds: Vec<f64>,
@@ -198,6 +199,7 @@ impl Simulation {
             obstacle_violating: vec![false; n * s.obstacles.len()],
             neighbourhood,
             near: Neighbours::new(),
+            positions: Vec::with_capacity(n),
             commands: vec![Command::default(); n],
             neighbours: Vec::new(),
             speeds: vec![0.0; n],
@@ -259,8 +261,12 @@ impl Simulation {
         let grid = !self.independent && self.neighbourhood == Neighbourhood::Grid;
         if grid {
             let reach = self.reach();
-            let robots = &self.robots;
-            self.near.build(|i| robots[i].pose.p, robots.len(), reach);
+            // The positions packed together: the search reads them many times over, and a robot's
+            // whole state is some 200 bytes.
+            self.positions.clear();
+            self.positions.extend(self.robots.iter().map(|r| r.pose.p));
+            let positions = &self.positions;
+            self.near.build(|i| positions[i], positions.len(), reach);
         }
         for i in 0..self.robots.len() {
             let me = self.robots[i];
