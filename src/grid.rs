@@ -158,6 +158,15 @@ impl Neighbours {
         }
     }
 
+    /// Makes room for `factor` times as many neighbours in all as the last build found, so
+    /// that rebuilds allocate nothing while the total stays below that.
+    pub fn reserve(&mut self, factor: f64) {
+        let want = (self.list.len() as f64 * factor) as usize;
+        for v in [&mut self.hits, &mut self.list] {
+            v.reserve(want.saturating_sub(v.len()));
+        }
+    }
+
     /// Robot `i`'s neighbours, ascending (empty before the first build or for `i` out of range).
     #[must_use]
     pub fn of(&self, i: usize) -> &[u32] {

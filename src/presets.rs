@@ -186,15 +186,21 @@ pub fn circle_swap(n: usize, radius: f64) -> Scenario {
 /// Neighbouring starts of a [`crowd`] are this many safe radii `r_ij` apart.
 pub const CROWD_SPACING: f64 = 4.0;
 
+/// A [`crowd`]'s speed limit `v_max` (m/s). Without one the field's speed grows with the
+/// distance to the goal (`k_v·|Γ|`), thousands of m/s across a large circle: a robot would
+/// cross the sensing radius `R_s` in one step and meet a neighbour the barrier never saw.
+/// At this speed a step moves a robot `0.2` of the default `R_s = 20`.
+pub const CROWD_MAX_SPEED: f64 = 20.0;
+
 /// The most robots a [`crowd`] is meant for (the page's limit; the builder takes any `n`).
 pub const CROWD_MAX: usize = 10_000;
 
 /// A crowd of `n` robots swapping antipodally on a circle, headings kept ([`circle_swap`]), at
 /// constant density: the circle grows with `n` so that neighbouring starts stay
 /// [`CROWD_SPACING`]`·r_ij` apart (chord `2R·sin(π/n)`), so a robot senses about as many
-/// neighbours at the start whatever `n`. The scenario of `dvf bench`. Default parameters,
-/// 120 s (a large crowd is still on its way then: at `n = 10 000` the circle's radius is
-/// about 6 400).
+/// neighbours at the start whatever `n`. The scenario of `dvf bench`. Default parameters
+/// but for `v_max` = [`CROWD_MAX_SPEED`]; the duration is the time to cross the circle at
+/// that speed plus 120 s (at `n = 10 000` the circle's radius is about 6 400).
 #[must_use]
 pub fn crowd(n: usize) -> Scenario {
     let spacing = CROWD_SPACING * Params::default().safe_radius;
@@ -203,10 +209,13 @@ pub fn crowd(n: usize) -> Scenario {
     } else {
         spacing / (2.0 * (PI / n as f64).sin())
     };
-    Scenario {
+    let mut s = Scenario {
         name: format!("crowd of {n}: antipodal swap on a circle of radius {radius:.1}"),
         ..circle_swap(n, radius)
-    }
+    };
+    s.params.v_max = Some(CROWD_MAX_SPEED);
+    s.duration = (2.0 * radius / CROWD_MAX_SPEED + 120.0).round();
+    s
 }
 
 /// A [`crowd`] of `n` robots with `m` obstacles (`r_o = 1`, `R_o = 3`) evenly spaced on the

@@ -194,8 +194,9 @@ impl Simulation {
             min_pair: None,
             min_clearance: None,
             violations: 0,
-            pair_violating: Vec::new(),
-            pair_scratch: Vec::new(),
+            // Room for a violating pair per robot: a violation allocates nothing.
+            pair_violating: Vec::with_capacity(n),
+            pair_scratch: Vec::with_capacity(n),
             obstacle_violating: vec![false; n * s.obstacles.len()],
             neighbourhood,
             near: Neighbours::new(),
@@ -243,6 +244,13 @@ impl Simulation {
     #[must_use]
     pub fn neighbourhood(&self) -> Neighbourhood {
         self.neighbourhood
+    }
+
+    /// Makes room for `factor` times as many sensed pairs as the current step has, so that
+    /// steps allocate nothing while the swarm senses fewer (the lists grow by doubling
+    /// otherwise, a few times over a run whose robots close in).
+    pub fn reserve_neighbours(&mut self, factor: f64) {
+        self.near.reserve(factor);
     }
 
     /// The reach of the neighbour lists: the sensing radius, and the collision distance
