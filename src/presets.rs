@@ -60,11 +60,18 @@ pub const PRESETS: &[Preset] = &[
 /// The preset shown when nothing else is asked for.
 pub const DEFAULT_PRESET: &str = "example4-obstacle-formation";
 
-/// Looks a preset up by name.
+/// The name of a [`crowd`] of N robots is this followed by N (`crowd-1000`).
+pub const CROWD_PREFIX: &str = "crowd-";
+
+/// Looks a preset up by name: one of [`PRESETS`], or `crowd-N` for a [`crowd`] of N robots
+/// (N = 1 … [`CROWD_MAX`], digits only).
 ///
 /// # Errors
 /// [`Error::UnknownPreset`] listing the names that exist.
 pub fn preset(name: &str) -> Result<Scenario, Error> {
+    if let Some(n) = crowd_size(name) {
+        return Ok(crowd(n));
+    }
     PRESETS
         .iter()
         .find(|p| p.name == name)
@@ -74,9 +81,20 @@ pub fn preset(name: &str) -> Result<Scenario, Error> {
             available: PRESETS
                 .iter()
                 .map(|p| p.name)
+                .chain([&*format!("{CROWD_PREFIX}N (N = 1 … {CROWD_MAX})")])
                 .collect::<Vec<_>>()
                 .join(", "),
         })
+}
+
+/// N of a name `crowd-N` within the crowd's range.
+fn crowd_size(name: &str) -> Option<usize> {
+    let digits = name.strip_prefix(CROWD_PREFIX)?;
+    if digits.is_empty() || digits.len() > 5 || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let n: usize = digits.parse().ok()?;
+    (1..=CROWD_MAX).contains(&n).then_some(n)
 }
 
 fn robot(start: [f64; 3], goal: [f64; 3]) -> RobotSpec {
@@ -315,6 +333,23 @@ mod tests {
             if n <= 1000 {
                 s.validate().unwrap();
             }
+        }
+    }
+
+    #[test]
+    fn crowd_names_give_crowds() {
+        assert_eq!(preset("crowd-40").unwrap(), crowd(40));
+        assert_eq!(preset("crowd-10000").unwrap().robots.len(), 10_000);
+        for bad in [
+            "crowd-",
+            "crowd-0",
+            "crowd-10001",
+            "crowd-+5",
+            "crowd-5x",
+            "crowd-99999999",
+        ] {
+            let e = preset(bad).unwrap_err().to_string();
+            assert!(e.contains("crowd-N"), "{bad}: {e}");
         }
     }
 
