@@ -150,6 +150,7 @@ pub struct Simulation {
     // Scratch, reused every step.
     near: Neighbours,
     positions: Vec<DVec2>,
+    constraints: safety::Constraints,
     commands: Vec<Command>,
     neighbours: Vec<Neighbour>,
     speeds: Vec<f64>,
@@ -201,6 +202,7 @@ impl Simulation {
             neighbourhood,
             near: Neighbours::new(),
             positions: Vec::with_capacity(n),
+            constraints: safety::Constraints::new(),
             commands: vec![Command::default(); n],
             neighbours: Vec::new(),
             speeds: vec![0.0; n],
@@ -313,7 +315,8 @@ impl Simulation {
                 sensed.clone(),
                 self.neighbours.iter().copied(),
             );
-            e.command = safety::filter(
+            e.command = safety::filter_with(
+                &mut self.constraints,
                 &self.params,
                 self.dt,
                 me.pose,
