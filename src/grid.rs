@@ -31,10 +31,11 @@ const MAX_CELL_COORDINATE: f64 = 1e9;
 /// `|p_j − p_i|² ≤ reach²`, ascending. The same predicate as a scan over all pairs, so the two
 /// give the same sets.
 ///
-/// The grid is unbounded: cell `(cx, cy)` goes to bucket `hash(cx, cy)` of a table of about
-/// `2N` buckets, so memory and time stay O(N) however sparse the swarm (a crowd on a circle
-/// leaves the disc inside empty). Two cells that share a bucket only add candidates, which the
-/// distance test drops.
+/// The grid is unbounded: cell `(cx, cy)` goes to bucket `(cy·K + cx) mod B` of a table of
+/// `B ≥ 2N` buckets (`K` a large odd constant), so memory and time stay O(N) however sparse the
+/// swarm (a crowd on a circle leaves the disc inside empty). The three cells of a row of the
+/// 3 × 3 block around a robot are three consecutive buckets, one range of robots; the rows land
+/// far apart. Two cells that share a bucket only add candidates, which the distance test drops.
 #[derive(Clone, Debug, Default)]
 pub struct Neighbours {
     // The table: robot `i` lies in bucket `bucket_of[i]`; bucket `b` lists
@@ -74,18 +75,16 @@ impl Neighbours {
         // A power of two at least 2N: few cells share a bucket.
         let bits = (2 * n.max(1)).next_power_of_two().trailing_zeros();
         let buckets = 1usize << bits;
-        let coords = |p: DVec2| -> (i64, i64) {
-            // `as` saturates (NaN → 0, ±∞ → the extremes): every position gets a cell.
-            ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64)
-        };
+        let coords = |p: DVec2| -> (i64, i64) { (floor(p.x / cell), floor(p.y / cell)) };
+        let mask = buckets as u64 - 1;
+        // Row-major within a row, rows scattered: the three cells of a row of the 3 × 3 block
+        // are three consecutive buckets.
         let bucket = |(cx, cy): (i64, i64)| -> usize {
-            let h = (cx as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
-                ^ (cy as u64).wrapping_mul(0xC2B2_AE3D_27D4_EB4F);
-            let h = (h ^ (h >> 29)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            // The high bits are the best mixed; `bits ≥ 1`.
-            (h >> (64 - bits)) as usize
+            ((cy as u64)
+                .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+                .wrapping_add(cx as u64)
+                & mask) as usize
         };
-
         // Counting sort into buckets, in ascending robot index within each bucket.
         self.start.clear();
         self.start.resize(buckets + 1, 0);
@@ -117,19 +116,44 @@ impl Neighbours {
             self.first.push(self.hits.len() as u32);
             let p = positions(i);
             let (cx, cy) = coords(p);
-            let mut runs = [(0u32, 0u32); 9];
+            // Bucket intervals [lo, hi] of the three rows, split where they wrap.
+            let mut spans = [(0usize, 0usize); 6];
             let mut k = 0;
             for dy in -1..=1_i64 {
-                for dx in -1..=1_i64 {
-                    let b = bucket((cx.wrapping_add(dx), cy.wrapping_add(dy)));
-                    let run = (self.start[b], self.start[b + 1]);
-                    // Cells that share a bucket share its run: visit it once.
-                    if run.0 < run.1 && !runs[..k].contains(&run) {
-                        runs[k] = run;
-                        k += 1;
-                    }
+                let lo = bucket((cx.wrapping_sub(1), cy.wrapping_add(dy)));
+                let hi = lo + 2;
+                if hi < buckets {
+                    spans[k] = (lo, hi);
+                    k += 1;
+                } else {
+                    spans[k] = (lo, buckets - 1);
+                    spans[k + 1] = (0, hi - buckets);
+                    k += 2;
                 }
             }
+            let spans = &mut spans[..k];
+            // Sort (at most six) and merge overlapping or touching intervals: a bucket once.
+            for x in 1..spans.len() {
+                let mut y = x;
+                while y > 0 && spans[y - 1].0 > spans[y].0 {
+                    spans.swap(y - 1, y);
+                    y -= 1;
+                }
+            }
+            let mut runs = [(0u32, 0u32); 6];
+            let mut k = 0;
+            let mut cur = spans[0];
+            for &(lo, hi) in &spans[1..] {
+                if lo <= cur.1 + 1 {
+                    cur.1 = cur.1.max(hi);
+                } else {
+                    runs[k] = (self.start[cur.0], self.start[cur.1 + 1]);
+                    k += 1;
+                    cur = (lo, hi);
+                }
+            }
+            runs[k] = (self.start[cur.0], self.start[cur.1 + 1]);
+            k += 1;
             for &(from, to) in &runs[..k] {
                 for &j in &self.order[from as usize..to as usize] {
                     if j as usize != i && positions(j as usize).distance_squared(p) <= reach2 {
@@ -174,6 +198,20 @@ impl Neighbours {
             (Some(&a), Some(&b)) => &self.list[a as usize..b as usize],
             _ => &[],
         }
+    }
+}
+
+/// `⌊x⌋` as an integer, saturating (NaN → 0, ±∞ → the extremes): every position gets a
+/// cell. The same as `x.floor() as i64`, without the library call that `floor` is on a CPU
+/// baseline without SSE4.1.
+#[inline]
+fn floor(x: f64) -> i64 {
+    let t = x as i64;
+    // Exact below 2⁵³; above, `x` is an integer and `t as f64 == x` (or `t` saturated).
+    if (t as f64) > x {
+        t.saturating_sub(1)
+    } else {
+        t
     }
 }
 
@@ -227,6 +265,30 @@ mod tests {
         check(&points, 0.0);
         check(&[], 1.0);
         check(&[DVec2::ZERO], 1.0);
+    }
+
+    #[test]
+    fn floor_is_the_library_floor() {
+        for x in [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            -1e-300,
+            2.5e15,
+            -2.5e15 - 0.5,
+            9.3e18,
+            -9.3e18,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ] {
+            assert_eq!(floor(x), x.floor() as i64, "{x}");
+        }
     }
 
     #[test]
