@@ -2,7 +2,7 @@
 PORT ?= 8080
 export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
 
-.PHONY: serve build-wasm test lint test-native test-browser test-e2e tools
+.PHONY: serve build-wasm test lint test-native test-browser test-e2e tools bench
 
 tools:
 	bash .ci/install
@@ -33,3 +33,14 @@ test-e2e: build-wasm
 	node tests/e2e/embed.mjs
 
 test: tools lint test-native test-browser test-e2e
+
+# Benchmarks, not part of `make test`: ms per step of the crowd natively and in wasm (Node), at
+# 1,000 and 10,000 robots, alternating so that both see the same machine load (README,
+# Performance). `cargo bench --bench crowd` runs the criterion benchmarks.
+BENCH_STEPS ?= 200
+bench: build-wasm
+	cargo build --release
+	for n in 1000 10000 1000 10000 1000 10000; do \
+		./target/release/dvf bench --robots $$n --steps $(BENCH_STEPS); \
+		node www/bench.mjs --robots $$n --steps $(BENCH_STEPS); \
+	done

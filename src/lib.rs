@@ -6,6 +6,7 @@ pub mod approx;
 pub mod controller;
 pub mod error;
 pub mod field;
+pub mod grid;
 pub mod live;
 pub mod obstacle;
 pub mod params;
@@ -25,7 +26,7 @@ pub use obstacle::Obstacle;
 pub use params::Params;
 pub use scenario::Scenario;
 pub use se2::Pose;
-pub use sim::{run, Report, Simulation};
+pub use sim::{run, Neighbourhood, Report, Simulation};
 
 #[cfg(all(test, target_arch = "wasm32"))]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);

@@ -60,11 +60,18 @@ pub const PRESETS: &[Preset] = &[
 /// The preset shown when nothing else is asked for.
 pub const DEFAULT_PRESET: &str = "example4-obstacle-formation";
 
-/// Looks a preset up by name.
+/// The name of a [`crowd`] of N robots is this followed by N (`crowd-1000`).
+pub const CROWD_PREFIX: &str = "crowd-";
+
+/// Looks a preset up by name: one of [`PRESETS`], or `crowd-N` for a [`crowd`] of N robots
+/// (N = 1 … [`CROWD_MAX`], digits only).
 ///
 /// # Errors
 /// [`Error::UnknownPreset`] listing the names that exist.
 pub fn preset(name: &str) -> Result<Scenario, Error> {
+    if let Some(n) = crowd_size(name) {
+        return Ok(crowd(n));
+    }
     PRESETS
         .iter()
         .find(|p| p.name == name)
@@ -74,9 +81,20 @@ pub fn preset(name: &str) -> Result<Scenario, Error> {
             available: PRESETS
                 .iter()
                 .map(|p| p.name)
+                .chain([&*format!("{CROWD_PREFIX}N (N = 1 … {CROWD_MAX})")])
                 .collect::<Vec<_>>()
                 .join(", "),
         })
+}
+
+/// N of a name `crowd-N` within the crowd's range.
+fn crowd_size(name: &str) -> Option<usize> {
+    let digits = name.strip_prefix(CROWD_PREFIX)?;
+    if digits.is_empty() || digits.len() > 5 || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let n: usize = digits.parse().ok()?;
+    (1..=CROWD_MAX).contains(&n).then_some(n)
 }
 
 fn robot(start: [f64; 3], goal: [f64; 3]) -> RobotSpec {
@@ -183,6 +201,59 @@ pub fn circle_swap(n: usize, radius: f64) -> Scenario {
     }
 }
 
+/// Neighbouring starts of a [`crowd`] are this many safe radii `r_ij` apart.
+pub const CROWD_SPACING: f64 = 4.0;
+
+/// A [`crowd`]'s speed limit `v_max` (m/s). Without one the field's speed grows with the
+/// distance to the goal (`k_v·|Γ|`), thousands of m/s across a large circle: a robot would
+/// cross the sensing radius `R_s` in one step and meet a neighbour the barrier never saw.
+/// At this speed a step moves a robot `0.2` of the default `R_s = 20`.
+pub const CROWD_MAX_SPEED: f64 = 20.0;
+
+/// The most robots a [`crowd`] is meant for (the page's limit; the builder takes any `n`).
+pub const CROWD_MAX: usize = 10_000;
+
+/// A crowd of `n` robots swapping antipodally on a circle, headings kept ([`circle_swap`]), at
+/// constant density: the circle grows with `n` so that neighbouring starts stay
+/// [`CROWD_SPACING`]`·r_ij` apart (chord `2R·sin(π/n)`), so a robot senses about as many
+/// neighbours at the start whatever `n`. The scenario of `dvf bench`. Default parameters
+/// but for `v_max` = [`CROWD_MAX_SPEED`]; the duration is the time to cross the circle at
+/// that speed plus 120 s (at `n = 10 000` the circle's radius is about 6 400).
+#[must_use]
+pub fn crowd(n: usize) -> Scenario {
+    let spacing = CROWD_SPACING * Params::default().safe_radius;
+    let radius = if n < 2 {
+        0.5 * spacing
+    } else {
+        spacing / (2.0 * (PI / n as f64).sin())
+    };
+    let mut s = Scenario {
+        name: format!("crowd of {n}: antipodal swap on a circle of radius {radius:.1}"),
+        ..circle_swap(n, radius)
+    };
+    s.params.v_max = Some(CROWD_MAX_SPEED);
+    s.duration = (2.0 * radius / CROWD_MAX_SPEED + 120.0).round();
+    s
+}
+
+/// A [`crowd`] of `n` robots with `m` obstacles (`r_o = 1`, `R_o = 3`) evenly spaced on the
+/// circle of half its radius, which the robots cross on their way to the antipodes: the
+/// scenario of `dvf bench --obstacles M`. Meant for `n ≥ 10` (a smaller crowd's goals lie in
+/// the obstacles' rings).
+#[must_use]
+pub fn crowd_with_obstacles(n: usize, m: usize) -> Scenario {
+    let mut s = crowd(n);
+    let half = 0.5 * s.robots.first().map_or(0.0, |r| r.start_pose().p.length());
+    s.obstacles = (0..m)
+        .map(|k| Obstacle {
+            center: half * DVec2::from_angle(2.0 * PI * (k as f64 + 0.5) / m as f64),
+            radius: 1.0,
+            influence: 3.0,
+        })
+        .collect();
+    s
+}
+
 /// `n` robots in a vertical line at `x = −20`, `spacing` apart and facing east, swap to the
 /// line at `x = 20` in reversed order (Example 3, scenario 1, for any `n`). 120 s, default
 /// parameters.
@@ -249,6 +320,38 @@ mod tests {
     // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    /// Neighbouring starts stay `CROWD_SPACING·r_ij` apart whatever the crowd's size, and the
+    /// scenario is valid.
+    #[test]
+    fn a_crowd_keeps_its_density() {
+        for n in [2, 3, 10, 1000, CROWD_MAX] {
+            let s = crowd(n);
+            let (a, b) = (s.robots[0].start_pose().p, s.robots[1].start_pose().p);
+            crate::approx::assert_close!(a.distance(b), CROWD_SPACING, 1e-9);
+            assert_eq!(s.robots.len(), n);
+            if n <= 1000 {
+                s.validate().unwrap();
+            }
+        }
+    }
+
+    #[test]
+    fn crowd_names_give_crowds() {
+        assert_eq!(preset("crowd-40").unwrap(), crowd(40));
+        assert_eq!(preset("crowd-10000").unwrap().robots.len(), 10_000);
+        for bad in [
+            "crowd-",
+            "crowd-0",
+            "crowd-10001",
+            "crowd-+5",
+            "crowd-5x",
+            "crowd-99999999",
+        ] {
+            let e = preset(bad).unwrap_err().to_string();
+            assert!(e.contains("crowd-N"), "{bad}: {e}");
+        }
+    }
 
     #[test]
     fn every_preset_is_valid_and_named_uniquely() {

@@ -142,7 +142,7 @@ where
     let (neighbours, obstacles) = (neighbours.into_iter(), obstacles.into_iter());
     let a = rate * dt;
     let safe = 2.0 * params.safe_radius;
-    let limits = |direction| {
+    steer(params, dt, pose, c, field, |direction| {
         speed_limits(
             pose.p,
             direction,
@@ -152,7 +152,95 @@ where
             neighbours.clone(),
             obstacles.clone(),
         )
+    })
+}
+
+/// [`filter`] with the barrier's constraints derived once into `constraints` (a buffer reused
+/// from robot to robot) rather than once for each of the two directions it asks about. The
+/// same arithmetic in the same order: the same bits as [`filter`].
+#[must_use]
+#[allow(clippy::too_many_arguments)]
+pub fn filter_with<'a>(
+    constraints: &mut Constraints,
+    params: &Params,
+    dt: f64,
+    pose: Pose,
+    c: Command,
+    field: DVec2,
+    neighbours: impl IntoIterator<Item = DVec2>,
+    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+) -> Command {
+    let Some(rate) = params.barrier_rate else {
+        return c;
     };
+    let safe = 2.0 * params.safe_radius;
+    constraints.derive(pose.p, rate * dt, safe, neighbours, obstacles);
+    steer(params, dt, pose, c, field, |direction| {
+        constraints.limits(direction, dt)
+    })
+}
+
+/// The barrier's constraints on one robot: for each neighbour and obstacle, the unit vector
+/// `u` away from it and the approach `budget` allowed per step, as [`speed_limits`] derives
+/// them. They do not depend on the direction of the step, so [`filter_with`] derives them once.
+#[derive(Clone, Debug, Default)]
+pub struct Constraints {
+    items: Vec<(DVec2, f64)>,
+}
+
+impl Constraints {
+    /// An empty set; its buffer grows to the most constraints a robot has had.
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Replaces the constraints with those of a robot at `p` (see [`speed_limits`]).
+    pub fn derive<'a>(
+        &mut self,
+        p: DVec2,
+        a: f64,
+        safe_distance: f64,
+        neighbours: impl IntoIterator<Item = DVec2>,
+        obstacles: impl IntoIterator<Item = &'a Obstacle>,
+    ) {
+        self.items.clear();
+        let safe_distance = safe_distance * (1.0 + MARGIN);
+        for q in neighbours {
+            let d = p.distance(q);
+            if let Some(u) = ((p - q) / d).try_normalize() {
+                self.items.push((u, 0.5 * a * (d - safe_distance).max(0.0)));
+            }
+        }
+        for o in obstacles {
+            let c = p.distance(o.center);
+            if let Some(u) = ((p - o.center) / c).try_normalize() {
+                self.items
+                    .push((u, a * (c - o.radius * (1.0 + MARGIN)).max(0.0)));
+            }
+        }
+    }
+
+    /// The speed limits of a step along `chord` (see [`speed_limits`]).
+    #[must_use]
+    pub fn limits(&self, chord: DVec2, dt: f64) -> SpeedLimits {
+        let mut limits = SpeedLimits::FREE;
+        for &(u, budget) in &self.items {
+            limits.keep(u, chord, dt, budget);
+        }
+        limits
+    }
+}
+
+/// The rest of [`filter`] once the barrier's limits can be had for any direction.
+fn steer(
+    params: &Params,
+    dt: f64,
+    pose: Pose,
+    c: Command,
+    field: DVec2,
+    limits: impl Fn(DVec2) -> SpeedLimits,
+) -> Command {
     let wanted = (params.k_v * field.length()).min(params.avoid_speed);
     let held = match field.try_normalize() {
         Some(along) if wanted > 0.0 => (1.0 - limits(along).hi / wanted).max(0.0),
@@ -176,6 +264,57 @@ mod tests {
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
     /// The chord agrees with the exact arc of the simulator.
+    /// The constraints derived once give the same bits as deriving them for each direction.
+    #[test]
+    fn filter_with_equals_filter() {
+        let mut s = 0x2545_F491_4F6C_DD1D_u64;
+        let mut next = || {
+            s ^= s >> 12;
+            s ^= s << 25;
+            s ^= s >> 27;
+            (s.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let params = Params::default();
+        let mut constraints = Constraints::new();
+        for _ in 0..500 {
+            let pose = Pose::new(next() * 5.0, next() * 5.0, next() * 3.0);
+            let c = Command {
+                v: next() * 30.0,
+                omega: next() * 5.0,
+            };
+            let field = DVec2::new(next() * 10.0, next() * 10.0);
+            let neighbours: Vec<DVec2> = (0..4)
+                .map(|_| DVec2::new(next() * 8.0, next() * 8.0))
+                .collect();
+            let obstacles = [Obstacle {
+                center: DVec2::new(next() * 8.0, next() * 8.0),
+                radius: 1.0,
+                influence: 2.0,
+            }];
+            let a = filter(
+                &params,
+                0.01,
+                pose,
+                c,
+                field,
+                neighbours.iter().copied(),
+                &obstacles,
+            );
+            let b = filter_with(
+                &mut constraints,
+                &params,
+                0.01,
+                pose,
+                c,
+                field,
+                neighbours.iter().copied(),
+                &obstacles,
+            );
+            assert_eq!(a.v.to_bits(), b.v.to_bits());
+            assert_eq!(a.omega.to_bits(), b.omega.to_bits());
+        }
+    }
+
     #[test]
     fn chord_is_the_step_of_the_arc() {
         for (theta, omega) in [(0.3, 0.0), (-2.0, 7.0), (3.0, -40.0)] {

@@ -10,6 +10,7 @@
 //! no randomness, no parallelism and no iteration over hashed containers.
 
 use crate::controller::{evaluate, Command, Evaluation};
+use crate::grid::Neighbours;
 use crate::obstacle::Obstacle;
 use crate::params::Params;
 use crate::safety;
@@ -111,6 +112,18 @@ pub struct Report {
     pub violations: usize,
 }
 
+/// How a [`Simulation`] finds the robots near each robot (the sensed set of eq.
+/// `eq_nonholo_controller_co_avoid` and the pairs of the safety metrics). Both give the same
+/// bits; they differ in cost only.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Neighbourhood {
+    /// A uniform grid ([`crate::grid`]): O(N) per step at bounded density.
+    #[default]
+    Grid,
+    /// Every pair, O(N²) per step: the reference the grid is tested against.
+    AllPairs,
+}
+
 /// A running simulation.
 #[derive(Clone, Debug)]
 pub struct Simulation {
@@ -127,18 +140,33 @@ pub struct Simulation {
     min_pair: Option<f64>,
     min_clearance: Option<f64>,
     violations: usize,
-    pair_violating: std::collections::BTreeSet<(usize, usize)>,
-    obstacle_violating: std::collections::BTreeSet<(usize, usize)>,
+    // The pairs `(i, j)`, `i < j`, closer than `2·r_ij`, ascending; `pair_scratch` receives the
+    // current step's before the two are swapped.
+    pair_violating: Vec<(u32, u32)>,
+    pair_scratch: Vec<(u32, u32)>,
+    // Robot `i` inside obstacle `k`: `obstacle_violating[i·M + k]`.
+    obstacle_violating: Vec<bool>,
+    neighbourhood: Neighbourhood,
     // Scratch, reused every step.
+    near: Neighbours,
+    positions: Vec<DVec2>,
+    constraints: safety::Constraints,
     commands: Vec<Command>,
     neighbours: Vec<Neighbour>,
     speeds: Vec<f64>,
 }
 
 impl Simulation {
-    /// A simulation at time 0 of a (validated) scenario.
+    /// A simulation at time 0 of a (validated) scenario, finding neighbours by a grid.
     #[must_use]
     pub fn new(s: &Scenario) -> Self {
+        Self::with_neighbourhood(s, Neighbourhood::Grid)
+    }
+
+    /// A simulation at time 0 of a (validated) scenario, finding neighbours as `neighbourhood`
+    /// says (the result is the same either way).
+    #[must_use]
+    pub fn with_neighbourhood(s: &Scenario, neighbourhood: Neighbourhood) -> Self {
         let robots: Vec<Robot> = s
             .robots
             .iter()
@@ -167,8 +195,14 @@ impl Simulation {
             min_pair: None,
             min_clearance: None,
             violations: 0,
-            pair_violating: Default::default(),
-            obstacle_violating: Default::default(),
+            // Room for a violating pair per robot: a violation allocates nothing.
+            pair_violating: Vec::with_capacity(n),
+            pair_scratch: Vec::with_capacity(n),
+            obstacle_violating: vec![false; n * s.obstacles.len()],
+            neighbourhood,
+            near: Neighbours::new(),
+            positions: Vec::with_capacity(n),
+            constraints: safety::Constraints::new(),
             commands: vec![Command::default(); n],
             neighbours: Vec::new(),
             speeds: vec![0.0; n],
@@ -208,6 +242,24 @@ impl Simulation {
     pub fn dt(&self) -> f64 {
         self.dt
     }
+    /// How neighbours are found.
+    #[must_use]
+    pub fn neighbourhood(&self) -> Neighbourhood {
+        self.neighbourhood
+    }
+
+    /// Makes room for `factor` times as many sensed pairs as the current step has, so that
+    /// steps allocate nothing while the swarm senses fewer (the lists grow by doubling
+    /// otherwise, a few times over a run whose robots close in).
+    pub fn reserve_neighbours(&mut self, factor: f64) {
+        self.near.reserve(factor);
+    }
+
+    /// The reach of the neighbour lists: the sensing radius, and the collision distance
+    /// `2·r_ij` of the violation count should it be larger.
+    fn reach(&self) -> f64 {
+        self.params.sense_radius.max(2.0 * self.params.safe_radius)
+    }
 
     /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
     fn evaluate_all(&mut self) {
@@ -216,17 +268,35 @@ impl Simulation {
         for (s, r) in self.speeds.iter_mut().zip(&self.robots) {
             *s = r.last.command.v.abs();
         }
+        let grid = !self.independent && self.neighbourhood == Neighbourhood::Grid;
+        if grid {
+            let reach = self.reach();
+            // The positions packed together: the search reads them many times over, and a robot's
+            // whole state is some 200 bytes.
+            self.positions.clear();
+            self.positions.extend(self.robots.iter().map(|r| r.pose.p));
+            let positions = &self.positions;
+            self.near.build(|i| positions[i], positions.len(), reach);
+        }
         for i in 0..self.robots.len() {
             let me = self.robots[i];
             self.neighbours.clear();
-            if !self.independent {
+            // Either way the sensed robots come in ascending index: the grid's lists are sorted.
+            let mut sense = |j: usize, other: &Robot| {
+                if j != i && other.pose.p.distance_squared(me.pose.p) <= rs * rs {
+                    self.neighbours.push(Neighbour {
+                        position: other.pose.p,
+                        speed: self.speeds[j],
+                    });
+                }
+            };
+            if grid {
+                for &j in self.near.of(i) {
+                    sense(j as usize, &self.robots[j as usize]);
+                }
+            } else if !self.independent {
                 for (j, other) in self.robots.iter().enumerate() {
-                    if j != i && other.pose.p.distance_squared(me.pose.p) <= rs * rs {
-                        self.neighbours.push(Neighbour {
-                            position: other.pose.p,
-                            speed: self.speeds[j],
-                        });
-                    }
+                    sense(j, other);
                 }
             }
             let err = Pose {
@@ -245,7 +315,8 @@ impl Simulation {
                 sensed.clone(),
                 self.neighbours.iter().copied(),
             );
-            e.command = safety::filter(
+            e.command = safety::filter_with(
+                &mut self.constraints,
                 &self.params,
                 self.dt,
                 me.pose,
@@ -279,9 +350,11 @@ impl Simulation {
         self.observe();
     }
 
-    /// Updates the metrics from the current state.
+    /// Updates the metrics from the current state (after [`Self::evaluate_all`], whose
+    /// neighbour lists it reuses).
     fn observe(&mut self) {
         let p = self.params;
+        let m = self.obstacles.len();
         for (i, r) in self.robots.iter().enumerate() {
             let inside =
                 r.position_error() <= p.tol_position && r.heading_error_abs() <= p.tol_heading;
@@ -293,20 +366,69 @@ impl Simulation {
             for (k, o) in self.obstacles.iter().enumerate() {
                 let c = o.clearance(r.pose.p);
                 self.min_clearance = Some(self.min_clearance.map_or(c, |m: f64| m.min(c)));
-                self.violations += count_entry(&mut self.obstacle_violating, (i, k), c < 0.0);
+                let was = std::mem::replace(&mut self.obstacle_violating[i * m + k], c < 0.0);
+                self.violations += usize::from(c < 0.0 && !was);
             }
         }
         if self.independent {
             return;
         }
         let safe = 2.0 * p.safe_radius;
-        for i in 0..self.robots.len() {
-            for j in i + 1..self.robots.len() {
-                let d = self.robots[i].pose.p.distance(self.robots[j].pose.p);
-                self.min_pair = Some(self.min_pair.map_or(d, |m: f64| m.min(d)));
-                self.violations += count_entry(&mut self.pair_violating, (i, j), d < safe);
+        let n = self.robots.len();
+        self.pair_scratch.clear();
+        // The pairs in ascending (i, j), as a scan over all pairs visits them.
+        let mut pair = |i: usize, j: usize, min: &mut Option<f64>| {
+            let d = self.robots[i].pose.p.distance(self.robots[j].pose.p);
+            *min = Some(min.map_or(d, |m: f64| m.min(d)));
+            if d < safe {
+                self.pair_scratch.push((i as u32, j as u32));
+            }
+        };
+        let mut min = None;
+        match self.neighbourhood {
+            Neighbourhood::AllPairs => {
+                for i in 0..n {
+                    for j in i + 1..n {
+                        pair(i, j, &mut min);
+                    }
+                }
+            }
+            Neighbourhood::Grid => {
+                // Every pair closer than `2·r_ij` is in the lists (the reach is at least that),
+                // and so is the closest pair whenever some pair is within the reach.
+                for i in 0..n {
+                    for &j in self.near.of(i) {
+                        if j as usize > i {
+                            pair(i, j as usize, &mut min);
+                        }
+                    }
+                }
+                // No pair within the reach: the closest pair matters only while no closer one
+                // has been seen, which a swarm at bounded density leaves behind at once.
+                let reach = self.reach();
+                if min.is_none() && self.min_pair.map_or(true, |m| m > reach) {
+                    for i in 0..n {
+                        for j in i + 1..n {
+                            let d = self.robots[i].pose.p.distance(self.robots[j].pose.p);
+                            min = Some(min.map_or(d, |m: f64| m.min(d)));
+                        }
+                    }
+                }
             }
         }
+        if let Some(d) = min {
+            self.min_pair = Some(self.min_pair.map_or(d, |m: f64| m.min(d)));
+        }
+        // A violation event: a pair violating now that was not at the last observation (both
+        // lists ascending: a merge).
+        let mut was = self.pair_violating.iter().peekable();
+        for now in &self.pair_scratch {
+            while was.next_if(|w| *w < now).is_some() {}
+            if was.next_if(|w| *w == now).is_none() {
+                self.violations += 1;
+            }
+        }
+        std::mem::swap(&mut self.pair_violating, &mut self.pair_scratch);
     }
 
     /// The report of the run so far.
@@ -331,21 +453,6 @@ impl Simulation {
             min_obstacle_clearance: self.min_clearance,
             violations: self.violations,
         }
-    }
-}
-
-/// Tracks which pairs are in violation: returns 1 when `key` enters the violating state (a
-/// violation event), 0 while it stays in it or out of it.
-fn count_entry(
-    violating: &mut std::collections::BTreeSet<(usize, usize)>,
-    key: (usize, usize),
-    now: bool,
-) -> usize {
-    if now {
-        usize::from(violating.insert(key))
-    } else {
-        violating.remove(&key);
-        0
     }
 }
 

@@ -808,3 +808,39 @@ fn sweep_summarises_random_scenarios_and_refuses_bad_options() {
     assert_rejected(&["sweep", "--barrier-rate", "80"], &["dt", "barrier_rate"]);
     assert_rejected(&["sweep", "--avoidance", "orbit"], &["orbit"]);
 }
+
+/// `dvf bench` prints one JSON line with the documented keys in the documented order, and
+/// rejects counts out of range with one line on stderr.
+#[test]
+fn bench_prints_one_line_of_timing() {
+    let o = dvf(&[
+        "bench",
+        "--robots",
+        "50",
+        "--steps",
+        "3",
+        "--obstacles",
+        "2",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert_eq!(out.lines().count(), 1, "{out}");
+    assert!(
+        out.starts_with(r#"{"robots": 50, "steps": 3, "obstacles": 2, "ms_per_step": "#),
+        "{out}"
+    );
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let ms = num(&v["ms_per_step"]);
+    assert!(ms.is_finite() && ms > 0.0, "{out}");
+    for bad in [
+        ["--robots", "0"],
+        ["--robots", "10001"],
+        ["--steps", "0"],
+        ["--obstacles", "1001"],
+    ] {
+        let o = dvf(&["bench", bad[0], bad[1]]);
+        assert_eq!(o.status.code(), Some(2), "{bad:?}");
+        let err = stderr(&o);
+        assert!(err.starts_with(&bad[0][2..]), "{bad:?}: {err}");
+    }
+}

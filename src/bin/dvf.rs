@@ -18,7 +18,7 @@ mod cli {
     use dvf::params::Avoidance;
     use dvf::presets::{preset, PRESETS};
     use dvf::scenario::Scenario;
-    use dvf::sim::run_recorded;
+    use dvf::sim::{run_recorded, Neighbourhood, Simulation};
     use dvf::sweep::{sweep, Recipe};
     use std::io::Write;
     use std::path::PathBuf;
@@ -88,6 +88,23 @@ mod cli {
             #[arg(long, value_name = "DIR")]
             write: Option<PathBuf>,
         },
+        /// Time the simulation of a crowd (N robots swapping across a circle at constant
+        /// density, M obstacles on the way) and print
+        /// `{"robots": N, "steps": S, "obstacles": M, "ms_per_step": x}`.
+        Bench {
+            /// Robots N (1 … 10000).
+            #[arg(long, default_value_t = 1000)]
+            robots: usize,
+            /// Steps S timed (1 … 1000000), after the simulation is set up.
+            #[arg(long, default_value_t = 100)]
+            steps: usize,
+            /// Obstacles M on the circle of half the crowd's radius.
+            #[arg(long, default_value_t = 0)]
+            obstacles: usize,
+            /// Find neighbours by comparing all pairs (the O(N²) reference) instead of a grid.
+            #[arg(long)]
+            all_pairs: bool,
+        },
         /// List the presets, or print one as a scenario file with `--preset NAME`.
         Presets {
             /// Print this preset's scenario JSON (a starting point for a file of your own).
@@ -110,6 +127,8 @@ mod cli {
         preset: Option<String>,
     }
 
+    /// Largest `--steps` of `dvf bench`.
+    const MAX_BENCH_STEPS: usize = 1_000_000;
     /// Largest `--count` of `dvf sweep`.
     const MAX_SWEEP: usize = 1_000_000;
     /// Largest robot count of `dvf sweep` (the scenario limit).
@@ -274,6 +293,48 @@ mod cli {
                 }
                 let json = serde_json::to_string(&summary).map_err(|e| e.to_string())?;
                 writeln!(out, "{json}").map_err(|e| e.to_string())?;
+            }
+            Command::Bench {
+                robots,
+                steps,
+                obstacles,
+                all_pairs,
+            } => {
+                if !(1..=dvf::scenario::MAX_ROBOTS).contains(&robots) {
+                    return Err(format!(
+                        "robots: must be between 1 and {}, not {robots}",
+                        dvf::scenario::MAX_ROBOTS
+                    ));
+                }
+                if !(1..=MAX_BENCH_STEPS).contains(&steps) {
+                    return Err(format!(
+                        "steps: must be between 1 and {MAX_BENCH_STEPS}, not {steps}"
+                    ));
+                }
+                if obstacles > dvf::scenario::MAX_OBSTACLES {
+                    return Err(format!(
+                        "obstacles: at most {}, not {obstacles}",
+                        dvf::scenario::MAX_OBSTACLES
+                    ));
+                }
+                let s = dvf::presets::crowd_with_obstacles(robots, obstacles);
+                let way = if all_pairs {
+                    Neighbourhood::AllPairs
+                } else {
+                    Neighbourhood::Grid
+                };
+                let mut sim = Simulation::with_neighbourhood(&s, way);
+                let start = std::time::Instant::now();
+                for _ in 0..steps {
+                    sim.step();
+                }
+                let ms = start.elapsed().as_secs_f64() * 1e3 / steps as f64;
+                // Keys in the documented order (serde_json's map would sort them).
+                writeln!(
+                    out,
+                    r#"{{"robots": {robots}, "steps": {steps}, "obstacles": {obstacles}, "ms_per_step": {ms}}}"#
+                )
+                .map_err(|e| e.to_string())?;
             }
             Command::Simulate { source, csv } => {
                 let s = source.load()?;

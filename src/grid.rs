@@ -1,0 +1,309 @@
+//! Neighbour search by a uniform grid: the robots within a range of each robot, in ascending
+//! index, at O(N) cost for a bounded density.
+//!
+//! Everything in the method that couples robots has a finite reach: a robot senses the robots
+//! within `R_s` (eq. `eq_nonholo_controller_co_avoid` sums over the sensed set only), and the
+//! safety metrics look at pairs closer than `2·r_ij`. A grid of square cells no smaller than
+//! that reach puts every robot's neighbours in its own cell and the eight around it, so a step
+//! looks at a bounded number of candidates per robot instead of all `N − 1`.
+//!
+//! The cells are hashed into a table of counting-sorted arrays (a start per bucket, robot
+//! indices in bucket order), so a rebuild allocates nothing once the buffers have grown to the
+//! swarm's size. The lists come out in ascending index (see [`Neighbours::build`] for
+//! how, without a sort): the neighbours reach the controller in the same order as a scan of all
+//! robots, so sums over them (the centroid of eq. `eq_tilde_p_o`) give the same bits.
+
+use glam::DVec2;
+
+/// Cells are this much wider than the reach, so that rounding in `x / cell` cannot put two
+/// robots within reach more than one cell apart (see [`MAX_CELL_COORDINATE`]).
+const CELL_MARGIN: f64 = 1e-6;
+
+/// Cell coordinates stay below this: the rounding error of `x / cell` (about
+/// `|x / cell|·2⁻⁵³ ≤ 1.2·10⁻⁷` cell widths) is then far below [`CELL_MARGIN`]. Scenario
+/// coordinates are at most 10⁷ ([`crate::scenario::MAX_BOUNDS`]), so only a reach below 0.01
+/// gets wider cells from this.
+const MAX_CELL_COORDINATE: f64 = 1e9;
+
+/// The robots within `reach` of each robot, as flat per-robot lists (compressed rows).
+///
+/// After [`Neighbours::build`], [`Neighbours::of`]`(i)` holds the indices `j ≠ i` with
+/// `|p_j − p_i|² ≤ reach²`, ascending. The same predicate as a scan over all pairs, so the two
+/// give the same sets.
+///
+/// The grid is unbounded: cell `(cx, cy)` goes to bucket `(cy·K + cx) mod B` of a table of
+/// `B ≥ 2N` buckets (`K` a large odd constant), so memory and time stay O(N) however sparse the
+/// swarm (a crowd on a circle leaves the disc inside empty). The three cells of a row of the
+/// 3 × 3 block around a robot are three consecutive buckets, one range of robots; the rows land
+/// far apart. Two cells that share a bucket only add candidates, which the distance test drops.
+#[derive(Clone, Debug, Default)]
+pub struct Neighbours {
+    // The table: robot `i` lies in bucket `bucket_of[i]`; bucket `b` lists
+    // `order[start[b]..start[b + 1]]`, in ascending robot index.
+    bucket_of: Vec<u32>,
+    start: Vec<u32>,
+    order: Vec<u32>,
+    // The lists: robot `i`'s neighbours are `list[first[i]..first[i + 1]]`; `hits` holds the
+    // same rows in bucket order, `cursor` is the fill position of each row.
+    first: Vec<u32>,
+    list: Vec<u32>,
+    hits: Vec<u32>,
+    cursor: Vec<u32>,
+}
+
+impl Neighbours {
+    /// An empty search; its buffers grow on the first [`Neighbours::build`].
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Rebuilds the lists for the `n` robots at `positions(0..n)` and a `reach` (scenario
+    /// units). Reuses the buffers: after the first call with as many robots, it allocates only
+    /// when the lists' total grows past its previous maximum.
+    ///
+    /// A non-finite position is nobody's neighbour (its distance is not `≤ reach`), as in a
+    /// scan over all pairs.
+    pub fn build(&mut self, positions: impl Fn(usize) -> DVec2, n: usize, reach: f64) {
+        let far = (0..n)
+            .map(&positions)
+            .filter(|p| p.is_finite())
+            .fold(0.0_f64, |m, p| m.max(p.abs().max_element()));
+        let cell = (reach * (1.0 + CELL_MARGIN))
+            .max(far / MAX_CELL_COORDINATE)
+            .max(f64::MIN_POSITIVE);
+        // A power of two at least 2N: few cells share a bucket.
+        let bits = (2 * n.max(1)).next_power_of_two().trailing_zeros();
+        let buckets = 1usize << bits;
+        let coords = |p: DVec2| -> (i64, i64) { (floor(p.x / cell), floor(p.y / cell)) };
+        let mask = buckets as u64 - 1;
+        // Row-major within a row, rows scattered: the three cells of a row of the 3 × 3 block
+        // are three consecutive buckets.
+        let bucket = |(cx, cy): (i64, i64)| -> usize {
+            ((cy as u64)
+                .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+                .wrapping_add(cx as u64)
+                & mask) as usize
+        };
+        // Counting sort into buckets, in ascending robot index within each bucket.
+        self.start.clear();
+        self.start.resize(buckets + 1, 0);
+        self.bucket_of.clear();
+        for i in 0..n {
+            let b = bucket(coords(positions(i)));
+            self.bucket_of.push(b as u32);
+            self.start[b + 1] += 1;
+        }
+        for b in 0..buckets {
+            self.start[b + 1] += self.start[b];
+        }
+        self.order.clear();
+        self.order.resize(n, 0);
+        self.cursor.clear();
+        self.cursor.extend_from_slice(&self.start[..buckets]);
+        for (i, &b) in self.bucket_of.iter().enumerate() {
+            let slot = &mut self.cursor[b as usize];
+            self.order[*slot as usize] = i as u32;
+            *slot += 1;
+        }
+
+        // The hits of each robot, in bucket order: the robots within reach among the 3 × 3
+        // cells around it (a robot within reach is at most one cell away along each axis).
+        let reach2 = reach * reach;
+        self.first.clear();
+        self.hits.clear();
+        for i in 0..n {
+            self.first.push(self.hits.len() as u32);
+            let p = positions(i);
+            let (cx, cy) = coords(p);
+            // Bucket intervals [lo, hi] of the three rows, split where they wrap.
+            let mut spans = [(0usize, 0usize); 6];
+            let mut k = 0;
+            for dy in -1..=1_i64 {
+                let lo = bucket((cx.wrapping_sub(1), cy.wrapping_add(dy)));
+                let hi = lo + 2;
+                if hi < buckets {
+                    spans[k] = (lo, hi);
+                    k += 1;
+                } else {
+                    spans[k] = (lo, buckets - 1);
+                    spans[k + 1] = (0, hi - buckets);
+                    k += 2;
+                }
+            }
+            let spans = &mut spans[..k];
+            // Sort (at most six) and merge overlapping or touching intervals: a bucket once.
+            for x in 1..spans.len() {
+                let mut y = x;
+                while y > 0 && spans[y - 1].0 > spans[y].0 {
+                    spans.swap(y - 1, y);
+                    y -= 1;
+                }
+            }
+            let mut runs = [(0u32, 0u32); 6];
+            let mut k = 0;
+            let mut cur = spans[0];
+            for &(lo, hi) in &spans[1..] {
+                if lo <= cur.1 + 1 {
+                    cur.1 = cur.1.max(hi);
+                } else {
+                    runs[k] = (self.start[cur.0], self.start[cur.1 + 1]);
+                    k += 1;
+                    cur = (lo, hi);
+                }
+            }
+            runs[k] = (self.start[cur.0], self.start[cur.1 + 1]);
+            k += 1;
+            for &(from, to) in &runs[..k] {
+                for &j in &self.order[from as usize..to as usize] {
+                    if j as usize != i && positions(j as usize).distance_squared(p) <= reach2 {
+                        self.hits.push(j);
+                    }
+                }
+            }
+        }
+        self.first.push(self.hits.len() as u32);
+
+        // Ascending order without a sort: "within reach" is symmetric (the squared distance
+        // of a pair is the same bits either way round), so robot `j`'s row holds exactly the
+        // robots `i` whose rows hold `j`. Scattering each `i` into the rows of its hits, for
+        // `i` ascending, fills every row in ascending order; the rows keep their lengths.
+        self.list.clear();
+        self.list.resize(self.hits.len(), 0);
+        self.cursor.clear();
+        self.cursor.extend_from_slice(&self.first[..n]);
+        for i in 0..n {
+            let (a, b) = (self.first[i] as usize, self.first[i + 1] as usize);
+            for &j in &self.hits[a..b] {
+                let slot = &mut self.cursor[j as usize];
+                self.list[*slot as usize] = i as u32;
+                *slot += 1;
+            }
+        }
+    }
+
+    /// Makes room for `factor` times as many neighbours in all as the last build found, so
+    /// that rebuilds allocate nothing while the total stays below that.
+    pub fn reserve(&mut self, factor: f64) {
+        let want = (self.list.len() as f64 * factor) as usize;
+        for v in [&mut self.hits, &mut self.list] {
+            v.reserve(want.saturating_sub(v.len()));
+        }
+    }
+
+    /// Robot `i`'s neighbours, ascending (empty before the first build or for `i` out of range).
+    #[must_use]
+    pub fn of(&self, i: usize) -> &[u32] {
+        match (self.first.get(i), self.first.get(i + 1)) {
+            (Some(&a), Some(&b)) => &self.list[a as usize..b as usize],
+            _ => &[],
+        }
+    }
+}
+
+/// `⌊x⌋` as an integer, saturating (NaN → 0, ±∞ → the extremes): every position gets a
+/// cell. The same as `x.floor() as i64`, without the library call that `floor` is on a CPU
+/// baseline without SSE4.1.
+#[inline]
+fn floor(x: f64) -> i64 {
+    let t = x as i64;
+    // Exact below 2⁵³; above, `x` is an integer and `t as f64 == x` (or `t` saturated).
+    if (t as f64) > x {
+        t.saturating_sub(1)
+    } else {
+        t
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    #[cfg(target_arch = "wasm32")]
+    use wasm_bindgen_test::wasm_bindgen_test as test;
+
+    /// Every list equals the scan over all robots, in the same (ascending) order.
+    fn check(points: &[DVec2], reach: f64) {
+        let mut g = Neighbours::new();
+        g.build(|i| points[i], points.len(), reach);
+        for (i, p) in points.iter().enumerate() {
+            let scan: Vec<u32> = (0..points.len())
+                .filter(|&j| j != i && points[j].distance_squared(*p) <= reach * reach)
+                .map(|j| j as u32)
+                .collect();
+            assert_eq!(g.of(i), &scan[..], "robot {i} at {p:?}");
+        }
+    }
+
+    #[test]
+    fn lists_equal_the_scan_over_all_pairs() {
+        // xorshift64*: enough for a test that needs no statistics.
+        let mut s = 0x9E37_79B9_7F4A_7C15_u64;
+        let mut next = || {
+            s ^= s >> 12;
+            s ^= s << 25;
+            s ^= s >> 27;
+            (s.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for (n, side, reach) in [
+            (300, 100.0, 7.0),
+            (50, 1e6, 3.0),
+            (80, 5.0, 20.0),
+            (400, 1e7, 1e-3),
+            (200, 50.0, 0.5),
+        ] {
+            let points: Vec<DVec2> = (0..n)
+                .map(|_| DVec2::new(next() * side, next() * side))
+                .collect();
+            check(&points, reach);
+        }
+        // Points exactly at the reach, on cell borders, coincident, and non-finite.
+        let mut points: Vec<DVec2> = (0..10).map(|k| DVec2::new(2.0 * k as f64, 0.0)).collect();
+        points.push(DVec2::new(4.0, 0.0));
+        points.push(DVec2::new(f64::NAN, 1.0));
+        points.push(DVec2::new(f64::INFINITY, 1.0));
+        check(&points, 2.0);
+        check(&points, 0.0);
+        check(&[], 1.0);
+        check(&[DVec2::ZERO], 1.0);
+    }
+
+    #[test]
+    fn floor_is_the_library_floor() {
+        for x in [
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            -1e-300,
+            2.5e15,
+            -2.5e15 - 0.5,
+            9.3e18,
+            -9.3e18,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ] {
+            assert_eq!(floor(x), x.floor() as i64, "{x}");
+        }
+    }
+
+    #[test]
+    fn a_rebuild_reuses_the_buffers() {
+        let points: Vec<DVec2> = (0..100)
+            .map(|k| DVec2::new((k % 10) as f64, (k / 10) as f64))
+            .collect();
+        let mut g = Neighbours::new();
+        g.build(|i| points[i], points.len(), 1.5);
+        let caps = (g.start.capacity(), g.order.capacity(), g.list.capacity());
+        let ptr = g.list.as_ptr();
+        g.build(|i| points[i] * 0.999, points.len(), 1.5);
+        assert_eq!(caps.1, g.order.capacity());
+        assert_eq!(caps.2, g.list.capacity());
+        assert_eq!(ptr, g.list.as_ptr());
+        assert!(g.start.capacity() >= caps.0);
+    }
+}

@@ -1,0 +1,43 @@
+// The wasm build's counterpart of `dvf bench`: times the crowd scenario in Node and prints
+// {"robots": N, "steps": S, "obstacles": M, "ms_per_step": x}.
+//
+//   make build-wasm && node www/bench.mjs --robots 1000 --steps 100 [--obstacles 0]
+
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { performance } from 'node:perf_hooks';
+import init, { CrowdBench } from './pkg/dvf.js';
+
+/** The value after `--name`, as a whole number, or `fallback`. */
+function option(name, fallback) {
+  const at = process.argv.indexOf(`--${name}`);
+  if (at < 0) return fallback;
+  const value = Number(process.argv[at + 1]);
+  if (!Number.isInteger(value) || value < 0) {
+    console.error(`${name}: expected a whole number, not ${process.argv[at + 1]}`);
+    process.exit(2);
+  }
+  return value;
+}
+
+const robots = option('robots', 1000);
+const steps = option('steps', 100);
+const obstacles = option('obstacles', 0);
+
+const wasmPath = fileURLToPath(new URL('./pkg/dvf_bg.wasm', import.meta.url));
+await init({ module_or_path: readFileSync(wasmPath) });
+
+let bench;
+try {
+  bench = new CrowdBench(robots, obstacles);
+  if (steps < 1) throw new Error(`steps: must be at least 1, not ${steps}`);
+  const start = performance.now();
+  bench.step(steps);
+  const ms = (performance.now() - start) / steps;
+  console.log(`{"robots": ${robots}, "steps": ${steps}, "obstacles": ${obstacles}, "ms_per_step": ${ms}}`);
+} catch (e) {
+  console.error(e.message ?? String(e));
+  process.exit(2);
+} finally {
+  bench?.free();
+}
