@@ -189,16 +189,10 @@ pub fn circle_swap(n: usize, radius: f64) -> Scenario {
             robot([p.x, p.y, facing], [-p.x, -p.y, facing])
         })
         .collect();
-    Scenario {
-        name: format!("{n} robots swap across a circle of radius {radius}"),
-        bounds: None,
-        duration: 120.0,
-        dt: 0.01,
-        params: Params::default(),
-        independent: false,
+    swap(
+        format!("{n} robots swap across a circle of radius {radius}"),
         robots,
-        obstacles: vec![],
-    }
+    )
 }
 
 /// Neighbouring starts of a [`crowd`] are this many safe radii `r_ij` apart.
@@ -265,8 +259,14 @@ pub fn line_swap(n: usize, spacing: f64) -> Scenario {
             robot([-20.0, y, 0.0], [20.0, -y, 0.0])
         })
         .collect();
+    swap(format!("{n} robots swap between two lines"), robots)
+}
+
+/// A swap of [`circle_swap`] or [`line_swap`]: 120 s at dt = 0.01, default parameters, no
+/// obstacles.
+fn swap(name: String, robots: Vec<RobotSpec>) -> Scenario {
     Scenario {
-        name: format!("{n} robots swap between two lines"),
+        name,
         bounds: None,
         duration: 120.0,
         dt: 0.01,

@@ -91,20 +91,37 @@ pub fn speed_limits<'a>(
     obstacles: impl IntoIterator<Item = &'a Obstacle>,
 ) -> SpeedLimits {
     let mut limits = SpeedLimits::FREE;
+    constraints(p, a, safe_distance, neighbours, obstacles, |u, budget| {
+        limits.keep(u, chord, dt, budget);
+    });
+    limits
+}
+
+/// The barrier's constraints on a robot at `p`, in order (neighbours, then obstacles): for
+/// each, the unit vector `u` away from it and the approach `budget` allowed per step, passed
+/// to `each`. They do not depend on the direction of the step; [`speed_limits`] and
+/// [`Constraints::derive`] both take them from here.
+fn constraints<'a>(
+    p: DVec2,
+    a: f64,
+    safe_distance: f64,
+    neighbours: impl IntoIterator<Item = DVec2>,
+    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+    mut each: impl FnMut(DVec2, f64),
+) {
     let safe_distance = safe_distance * (1.0 + MARGIN);
     for q in neighbours {
         let d = p.distance(q);
         if let Some(u) = ((p - q) / d).try_normalize() {
-            limits.keep(u, chord, dt, 0.5 * a * (d - safe_distance).max(0.0));
+            each(u, 0.5 * a * (d - safe_distance).max(0.0));
         }
     }
     for o in obstacles {
         let c = p.distance(o.center);
         if let Some(u) = ((p - o.center) / c).try_normalize() {
-            limits.keep(u, chord, dt, a * (c - o.radius * (1.0 + MARGIN)).max(0.0));
+            each(u, a * (c - o.radius * (1.0 + MARGIN)).max(0.0));
         }
     }
-    limits
 }
 
 /// The command `c` of a robot at `pose` whose field is `field` (world frame), made safe: its
@@ -205,20 +222,10 @@ impl Constraints {
         obstacles: impl IntoIterator<Item = &'a Obstacle>,
     ) {
         self.items.clear();
-        let safe_distance = safe_distance * (1.0 + MARGIN);
-        for q in neighbours {
-            let d = p.distance(q);
-            if let Some(u) = ((p - q) / d).try_normalize() {
-                self.items.push((u, 0.5 * a * (d - safe_distance).max(0.0)));
-            }
-        }
-        for o in obstacles {
-            let c = p.distance(o.center);
-            if let Some(u) = ((p - o.center) / c).try_normalize() {
-                self.items
-                    .push((u, a * (c - o.radius * (1.0 + MARGIN)).max(0.0)));
-            }
-        }
+        let items = &mut self.items;
+        constraints(p, a, safe_distance, neighbours, obstacles, |u, budget| {
+            items.push((u, budget));
+        });
     }
 
     /// The speed limits of a step along `chord` (see [`speed_limits`]).
