@@ -31,6 +31,7 @@ test-browser: tools
 test-e2e: build-wasm
 	node tests/e2e/smoke.mjs
 	node tests/e2e/embed.mjs
+	node tests/e2e/frames.mjs
 
 test: tools lint test-native test-browser test-e2e
 

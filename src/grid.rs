@@ -182,6 +182,12 @@ impl Neighbours {
         }
     }
 
+    /// [`Neighbours::build`] for a slice of positions (one instance of the generic build for
+    /// every caller with a slice: the wasm module stays smaller).
+    pub fn build_points(&mut self, points: &[DVec2], reach: f64) {
+        self.build(|i| points[i], points.len(), reach);
+    }
+
     /// Makes room for `factor` times as many neighbours in all as the last build found, so
     /// that rebuilds allocate nothing while the total stays below that.
     pub fn reserve(&mut self, factor: f64) {
@@ -198,6 +204,64 @@ impl Neighbours {
             (Some(&a), Some(&b)) => &self.list[a as usize..b as usize],
             _ => &[],
         }
+    }
+}
+
+/// The pair `(i, j, distance)` with `i < j` of `points` closer than `limit` with the smallest
+/// `j` (then `i`), or `None` if every pair is at least `limit` apart: the answer of the scan
+/// over all pairs (`for j { for i < j }`), at O(N) cost for a bounded density. Scenario
+/// validation and the playground's edits use it on up to 10,000 robots.
+#[must_use]
+pub fn closest_pair_below(points: &[DVec2], limit: f64) -> Option<(usize, usize, f64)> {
+    if limit.is_nan() || limit <= 0.0 {
+        return None;
+    }
+    let mut g = Neighbours::new();
+    g.build_points(points, limit);
+    // Each list is ascending, so its first `i < j` within the limit is the scan's.
+    (0..points.len()).find_map(|j| {
+        g.of(j)
+            .iter()
+            .map(|&i| i as usize)
+            .take_while(|&i| i < j)
+            .map(|i| (i, j, points[i].distance(points[j])))
+            .find(|&(_, _, d)| d < limit)
+    })
+}
+
+/// The smallest distance between two of `points` (NaN for fewer than two finite points).
+///
+/// The grid `search` is built with reach `reach`, then four times that, until some pair is
+/// within reach: the nearest pair is then among the lists. For `N` points spread over a box
+/// the nearest pair is about `side/√N` apart, so the search stops while cells hold a bounded
+/// number of points: O(N) per try for the swarms of the playground. `search` keeps its
+/// buffers from call to call.
+pub fn min_pair_distance(points: &[DVec2], reach: f64, search: &mut Neighbours) -> f64 {
+    let finite = points.iter().filter(|p| p.is_finite()).count();
+    if finite < 2 {
+        return f64::NAN;
+    }
+    let mut reach = if reach.is_finite() && reach > 0.0 {
+        reach
+    } else {
+        1.0
+    };
+    loop {
+        search.build_points(points, reach);
+        let mut m = f64::INFINITY;
+        for (i, p) in points.iter().enumerate() {
+            for &j in search.of(i) {
+                if (j as usize) > i {
+                    m = m.min(p.distance(points[j as usize]));
+                }
+            }
+        }
+        // Two finite points are within reach once it passes their distance (finite, as
+        // positions are at most 10⁷ from the origin): the loop ends.
+        if m.is_finite() {
+            return m;
+        }
+        reach *= 4.0;
     }
 }
 
@@ -265,6 +329,52 @@ mod tests {
         check(&points, 0.0);
         check(&[], 1.0);
         check(&[DVec2::ZERO], 1.0);
+    }
+
+    /// The closest pair below a limit and the smallest distance are those of the scan over
+    /// all pairs (same pair, same bits), on random points of several densities.
+    #[test]
+    fn pair_queries_equal_the_scan() {
+        let mut s = 0x2545_F491_4F6C_DD1D_u64;
+        let mut next = || {
+            s ^= s >> 12;
+            s ^= s << 25;
+            s ^= s >> 27;
+            (s.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut search = Neighbours::new();
+        for (n, side) in [(2, 10.0), (40, 10.0), (300, 100.0), (500, 1e5), (60, 1e7)] {
+            let points: Vec<DVec2> = (0..n)
+                .map(|_| DVec2::new(next() * side, next() * side))
+                .collect();
+            let mut scan = f64::INFINITY;
+            for j in 0..n {
+                for i in 0..j {
+                    scan = scan.min(points[i].distance(points[j]));
+                }
+            }
+            assert_eq!(
+                min_pair_distance(&points, 1.0, &mut search),
+                scan,
+                "{n} in {side}"
+            );
+            for limit in [0.5 * scan, scan, 1.5 * scan, side / 10.0, 2.0 * side] {
+                let brute = points.iter().enumerate().find_map(|(j, b)| {
+                    points[..j].iter().enumerate().find_map(|(i, a)| {
+                        let d = a.distance(*b);
+                        (d < limit).then_some((i, j, d))
+                    })
+                });
+                assert_eq!(
+                    closest_pair_below(&points, limit),
+                    brute,
+                    "{n} in {side}, {limit}"
+                );
+            }
+        }
+        assert!(min_pair_distance(&[DVec2::ONE], 1.0, &mut search).is_nan());
+        assert!(min_pair_distance(&[DVec2::ONE, DVec2::NAN], 1.0, &mut search).is_nan());
+        assert_eq!(closest_pair_below(&[DVec2::ONE, DVec2::ONE], 0.0), None);
     }
 
     #[test]

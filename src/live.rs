@@ -32,24 +32,38 @@
 use crate::controller::evaluate;
 use crate::error::Error;
 use crate::field::integral_curve;
+use crate::grid::{closest_pair_below, min_pair_distance, Neighbours};
 use crate::scenario::{RobotSpec, Scenario};
 use crate::se2::Pose;
 use crate::sim::Simulation;
 use crate::swarm::Neighbour;
 use glam::DVec2;
 
-/// At most this many robots in the playground: prediction costs `O(robots² · steps)` per edit.
-pub const MAX_LIVE_ROBOTS: usize = 100;
+/// At most this many robots in the playground: the scenario format's own limit. A step, a
+/// trail sample, a pair distance and a field sample all cost O(robots) (grid neighbour search),
+/// so a crowd of 10,000 plays live; only the predicted paths stop at
+/// [`MAX_PREDICTED_ROBOTS`].
+pub const MAX_LIVE_ROBOTS: usize = crate::scenario::MAX_ROBOTS;
+/// Predicted paths are computed for at most this many robots. Above, an edit would have to
+/// run a crowd ahead on every drag; the page draws no predicted paths and says so.
+pub const MAX_PREDICTED_ROBOTS: usize = 100;
+/// A prediction runs at most this many robot-steps: it looks `PREDICTION_WORK / robots` steps
+/// ahead (and at most [`MAX_PREDICTION_STEPS`]), so that an edit, and a link someone shares,
+/// cannot freeze the page. Example 4 (10 robots, 2,500 steps) is predicted to its end; 100
+/// robots look 5,000 steps ahead.
+pub const PREDICTION_WORK: usize = 500_000;
+/// Trail samples kept in all robots' rings together: a robot keeps
+/// `TRAIL_BUDGET / robots` samples, at most [`TRAIL_CAPACITY`]. 2¹⁸ samples are 6 MiB, and
+/// bound what the page draws when it redraws every trail (about 0.1 s in Chromium without a
+/// GPU, after a pan or zoom).
+pub const TRAIL_BUDGET: usize = 1 << 18;
 /// At most this many steps (`duration / dt`) in a live scenario: the trails are bounded, so
 /// a long run costs time, not memory.
 pub const MAX_LIVE_STEPS: usize = 1_000_000;
 /// A predicted path looks at most this many steps ahead.
 pub const MAX_PREDICTION_STEPS: usize = 200_000;
-/// At most this much prediction work, `robots² · min(steps, MAX_PREDICTION_STEPS)`: an edit
-/// (and a link someone shares) must not freeze the page. Example 4 (10 robots, 2,500 steps)
-/// needs 250,000.
-pub const MAX_LIVE_WORK: usize = 50_000_000;
-/// Samples kept per robot in the trail ring.
+/// Samples kept per robot in the trail ring, for up to `TRAIL_BUDGET / 2,048` = 128 robots
+/// (see [`Live::trail_capacity`]).
 pub const TRAIL_CAPACITY: usize = 2_048;
 /// At most this many samples per robot in a predicted path (the current state included).
 pub const PREDICTION_SAMPLES: usize = 400;
@@ -69,6 +83,10 @@ const CURVE_DT: f64 = 0.05;
 const CURVE_TIME: f64 = 8.0;
 /// Points kept per integral curve.
 pub const CURVE_POINTS: usize = 81;
+/// Field sampling bins the robots near the sampled box in at most this many cells per side.
+const FIELD_BINS: usize = 64;
+/// Below this many robots the smallest pair distance is a scan over all pairs.
+const PAIR_SCAN_MAX: usize = 64;
 
 /// A live, editable simulation and the buffers drawn from it.
 #[derive(Clone, Debug)]
@@ -82,18 +100,29 @@ pub struct Live {
     record_every: usize,
     poses: Vec<f64>,
     status: Vec<f64>,
+    /// Samples per robot in the trail ring (see [`Live::trail_capacity`]).
+    trail_capacity: usize,
     trails: Vec<f64>,
-    trail_lens: Vec<usize>,
+    trail_lens: Vec<u32>,
     trail_times: Vec<f64>,
     trail_min_pair: Vec<f64>,
     trail_head: usize,
     history_len: usize,
+    /// Samples written since the reset (sample `g` is in slot `g % trail_capacity`).
+    recorded: usize,
     predicted: Vec<f64>,
     predicted_times: Vec<f64>,
     predicted_min_pair: Vec<f64>,
     predicted_samples: usize,
     field: Vec<f64>,
     curves: Vec<f64>,
+    /// Scratch for the pair distance and the field samples, kept from call to call.
+    positions: Vec<DVec2>,
+    pair_search: Neighbours,
+    bin_start: Vec<u32>,
+    bin_order: Vec<u32>,
+    near: Vec<u32>,
+    neighbours: Vec<Neighbour>,
 }
 
 impl Live {
@@ -105,25 +134,33 @@ impl Live {
         check(&scenario)?;
         let sim = Simulation::new(&scenario);
         let mut live = Self {
-            record_every: record_every(&scenario),
+            record_every: 1,
             scenario,
             sim,
             base_time: 0.0,
             base_steps: 0,
             poses: Vec::new(),
             status: Vec::new(),
+            trail_capacity: 0,
             trails: Vec::new(),
             trail_lens: Vec::new(),
-            trail_times: vec![f64::NAN; TRAIL_CAPACITY],
-            trail_min_pair: vec![f64::NAN; TRAIL_CAPACITY],
+            trail_times: Vec::new(),
+            trail_min_pair: Vec::new(),
             trail_head: 0,
             history_len: 0,
+            recorded: 0,
             predicted: Vec::new(),
             predicted_times: Vec::new(),
             predicted_min_pair: Vec::new(),
             predicted_samples: 0,
             field: Vec::new(),
             curves: Vec::new(),
+            positions: Vec::new(),
+            pair_search: Neighbours::new(),
+            bin_start: Vec::new(),
+            bin_order: Vec::new(),
+            near: Vec::new(),
+            neighbours: Vec::new(),
         };
         live.reset();
         Ok(live)
@@ -164,14 +201,19 @@ impl Live {
         self.sim = Simulation::new(&self.scenario);
         self.base_time = 0.0;
         self.base_steps = 0;
-        self.record_every = record_every(&self.scenario);
         let n = self.scenario.robots.len();
+        let cap = trail_capacity(n);
+        self.trail_capacity = cap;
+        self.record_every = record_every(&self.scenario, cap);
         // Filled (NaN: not recorded yet) rather than zeroed: a zeroed allocation is committed
         // page by page as the ring fills, which would look like growth in a long run.
-        self.trails = vec![f64::NAN; n * TRAIL_CAPACITY * POSE_STRIDE];
+        self.trails = vec![f64::NAN; n * cap * POSE_STRIDE];
         self.trail_lens = vec![0; n];
+        self.trail_times = vec![f64::NAN; cap];
+        self.trail_min_pair = vec![f64::NAN; cap];
         self.trail_head = 0;
         self.history_len = 0;
+        self.recorded = 0;
         self.record();
         self.refresh();
         self.predict();
@@ -265,22 +307,19 @@ impl Live {
             };
         }
         // The safe distance is a promise: an edit may not put two robots inside each
-        // other's safe disc where they are now (at t = 0 the scenario's validation says so).
+        // other's safe disc where they are now, added robots at their starts included (at
+        // t = 0 the scenario's validation says so).
         let safe = 2.0 * from.params.safe_radius;
         if !from.independent {
-            for (j, b) in now.iter().enumerate().take(from.robots.len()) {
-                for (i, a) in now[..j].iter().enumerate() {
-                    let d = a.p.distance(b.p);
-                    if d < safe {
-                        return Err(Error::Invalid {
-                            field: format!("robots[{j}]"),
-                            message: format!(
-                                "would be {d:.3} from robots[{i}] where they are now, at t = {:.2} s: closer than the safe distance 2 · safe_radius = {safe}",
-                                self.time()
-                            ),
-                        });
-                    }
-                }
+            let at: Vec<DVec2> = from.robots.iter().map(|r| r.start_pose().p).collect();
+            if let Some((i, j, d)) = closest_pair_below(&at, safe) {
+                return Err(Error::Invalid {
+                    field: format!("robots[{j}]"),
+                    message: format!(
+                        "would be {d:.3} from robots[{i}] where they are now, at t = {:.2} s: closer than the safe distance 2 · safe_radius = {safe}",
+                        self.time()
+                    ),
+                });
             }
         }
         let time = self.time();
@@ -293,28 +332,74 @@ impl Live {
         self.scenario = scenario;
         if n != old_n {
             // Robots keep their index; removed ones drop off the end, added ones start empty.
-            self.trails
-                .resize(n * TRAIL_CAPACITY * POSE_STRIDE, f64::NAN);
+            let cap = self.trail_capacity;
+            self.trails.resize(n * cap * POSE_STRIDE, f64::NAN);
             self.trail_lens.resize(n, 0);
+            self.relayout_trails(trail_capacity(n));
         }
-        self.record_every = record_every(&self.scenario);
+        self.record_every = record_every(&self.scenario, self.trail_capacity);
         self.refresh();
         self.predict();
         Ok(())
     }
 
+    /// Moves the rings to `cap` samples per robot, keeping the newest samples (as many as
+    /// fit) in time order from slot 0.
+    fn relayout_trails(&mut self, cap: usize) {
+        let old = self.trail_capacity;
+        if cap == old {
+            return;
+        }
+        let keep = self.history_len.min(cap);
+        // Slot k of the new rings holds the sample of old slot `(head − keep + k) mod old`.
+        let head = self.trail_head;
+        let slot = move |k: usize| (head + old - keep + k) % old;
+        let n = self.trail_lens.len();
+        let mut trails = vec![f64::NAN; n * cap * POSE_STRIDE];
+        for i in 0..n {
+            for k in 0..keep {
+                let src = (i * old + slot(k)) * POSE_STRIDE;
+                let dst = (i * cap + k) * POSE_STRIDE;
+                trails[dst..dst + POSE_STRIDE]
+                    .copy_from_slice(&self.trails[src..src + POSE_STRIDE]);
+            }
+            self.trail_lens[i] = self.trail_lens[i].min(keep as u32);
+        }
+        let ring = |r: &[f64]| {
+            let mut v = vec![f64::NAN; cap];
+            for (k, x) in v.iter_mut().enumerate().take(keep) {
+                *x = r[slot(k)];
+            }
+            v
+        };
+        self.trail_times = ring(&self.trail_times);
+        self.trail_min_pair = ring(&self.trail_min_pair);
+        self.trails = trails;
+        self.trail_capacity = cap;
+        self.history_len = keep;
+        self.trail_head = keep % cap;
+        self.recorded = keep;
+    }
+
     /// Writes the current state into the history rings.
     fn record(&mut self) {
         let h = self.trail_head;
+        let cap = self.trail_capacity;
         for (i, r) in self.sim.robots().iter().enumerate() {
-            let o = (i * TRAIL_CAPACITY + h) * POSE_STRIDE;
+            let o = (i * cap + h) * POSE_STRIDE;
             self.trails[o..o + POSE_STRIDE].copy_from_slice(&r.pose.to_array());
-            self.trail_lens[i] = (self.trail_lens[i] + 1).min(TRAIL_CAPACITY);
+            self.trail_lens[i] = (self.trail_lens[i] + 1).min(cap as u32);
         }
         self.trail_times[h] = self.time();
-        self.trail_min_pair[h] = min_pair(&self.sim, self.scenario.independent);
-        self.history_len = (self.history_len + 1).min(TRAIL_CAPACITY);
-        self.trail_head = (h + 1) % TRAIL_CAPACITY;
+        self.trail_min_pair[h] = min_pair(
+            &self.sim,
+            self.scenario.independent,
+            &mut self.positions,
+            &mut self.pair_search,
+        );
+        self.history_len = (self.history_len + 1).min(cap);
+        self.trail_head = (h + 1) % cap;
+        self.recorded += 1;
     }
 
     /// Copies poses and controller states into their flat buffers.
@@ -337,25 +422,34 @@ impl Live {
     }
 
     /// Runs a copy of the simulation to the scenario's end (or until every robot has
-    /// converged, or [`MAX_PREDICTION_STEPS`] ahead) and keeps at most [`PREDICTION_SAMPLES`] evenly spaced samples of it.
+    /// converged, or [`PREDICTION_WORK`]` / robots` and at most [`MAX_PREDICTION_STEPS`]
+    /// steps ahead) and keeps at most [`PREDICTION_SAMPLES`] evenly spaced samples of it.
+    /// More than [`MAX_PREDICTED_ROBOTS`] robots are not predicted: no samples.
     pub fn predict(&mut self) {
+        let n = self.sim.robots().len();
+        self.predicted_times.clear();
+        self.predicted_min_pair.clear();
+        self.predicted.clear();
+        self.predicted_samples = 0;
+        if n > MAX_PREDICTED_ROBOTS {
+            return;
+        }
         let left = self
             .scenario
             .steps()
             .saturating_sub(self.steps())
-            .min(MAX_PREDICTION_STEPS);
+            .min(MAX_PREDICTION_STEPS)
+            .min(PREDICTION_WORK / n.max(1));
         let every = left.div_ceil(PREDICTION_SAMPLES - 1).max(1);
         let mut sim = self.sim.clone();
-        self.predicted_times.clear();
-        self.predicted_min_pair.clear();
-        let n = sim.robots().len();
         // Robot-major layout, but samples arrive time-major: collect per sample, transpose after.
         let mut by_time: Vec<f64> = Vec::with_capacity(PREDICTION_SAMPLES * n * POSE_STRIDE);
         let base = self.base_time;
         let independent = self.scenario.independent;
+        let (positions, search) = (&mut self.positions, &mut self.pair_search);
         let mut push = |sim: &Simulation, times: &mut Vec<f64>, pairs: &mut Vec<f64>| {
             times.push(base + sim.time());
-            pairs.push(min_pair(sim, independent));
+            pairs.push(min_pair(sim, independent, positions, search));
             for r in sim.robots() {
                 by_time.extend_from_slice(&r.pose.to_array());
             }
@@ -381,7 +475,6 @@ impl Live {
         }
         let samples = self.predicted_times.len();
         self.predicted_samples = samples;
-        self.predicted.clear();
         self.predicted.resize(n * samples * POSE_STRIDE, 0.0);
         for k in 0..samples {
             for i in 0..n {
@@ -415,28 +508,45 @@ impl Live {
         let rs = params.sense_radius;
         let independent = self.scenario.independent;
         let [x0, y0, x1, y1] = bounds;
+        // The robots that can be sensed from the box, binned in cells at least R_s wide: a
+        // sample's sensed robots lie in its cell and the eight around it. O(robots + samples).
+        let bins = if independent {
+            None
+        } else {
+            Some(self.bin_robots([x0 - rs, y0 - rs, x1 + rs, y1 + rs], rs))
+        };
         self.field.clear();
-        let mut neighbours: Vec<Neighbour> = Vec::new();
         for j in 0..ny {
             let y = y0 + (y1 - y0) * j as f64 / (ny - 1) as f64;
             for i in 0..nx {
                 let x = x0 + (x1 - x0) * i as f64 / (nx - 1) as f64;
                 let pose = Pose::new(x, y, robot.pose.theta);
-                neighbours.clear();
-                if !independent {
-                    neighbours.extend(
-                        self.sim
-                            .robots()
-                            .iter()
-                            .enumerate()
-                            .filter(|&(k, o)| {
-                                k != index && o.pose.p.distance_squared(pose.p) <= rs * rs
-                            })
-                            .map(|(_, o)| Neighbour {
-                                position: o.pose.p,
-                                speed: o.last.command.v.abs(),
-                            }),
-                    );
+                self.neighbours.clear();
+                if let Some(bins) = &bins {
+                    self.near.clear();
+                    let robots = self.sim.robots();
+                    let (cx, cy) = bins.cell(pose.p);
+                    for by in cy.saturating_sub(1)..=(cy + 1).min(bins.rows - 1) {
+                        let row = by * bins.cols;
+                        let lo = self.bin_start[row + cx.saturating_sub(1)] as usize;
+                        let hi = self.bin_start[row + (cx + 1).min(bins.cols - 1) + 1] as usize;
+                        self.near
+                            .extend(self.bin_order[lo..hi].iter().copied().filter(|&k| {
+                                k as usize != index
+                                    && robots[k as usize].pose.p.distance_squared(pose.p) <= rs * rs
+                            }));
+                    }
+                    // In robot order, as a scan over all robots would give them. An
+                    // insertion sort: a few dozen entries, mostly in order already (each
+                    // cell's are), and far less code in the wasm module than a library sort.
+                    insertion_sort(&mut self.near);
+                    self.neighbours.extend(self.near.iter().map(|&k| {
+                        let o = &robots[k as usize];
+                        Neighbour {
+                            position: o.pose.p,
+                            speed: o.last.command.v.abs(),
+                        }
+                    }));
                 }
                 let sensed = self
                     .sim
@@ -449,12 +559,56 @@ impl Live {
                     pose.error_to(robot.goal),
                     robot.last.command.v.abs(),
                     sensed,
-                    neighbours.iter().copied(),
+                    self.neighbours.iter().copied(),
                 );
                 self.field.extend_from_slice(&[x, y, e.field.x, e.field.y]);
             }
         }
         Ok(&self.field)
+    }
+
+    /// Counting-sorts the robots inside `area` into a row-major grid of cells at least `reach`
+    /// wide (at most [`FIELD_BINS`] per side): cell `c` holds
+    /// `bin_order[bin_start[c]..bin_start[c + 1]]`. Rows of cells are consecutive, so the
+    /// three cells of a row of a 3 × 3 block are one range.
+    fn bin_robots(&mut self, area: [f64; 4], reach: f64) -> Bins {
+        let [x0, y0, x1, y1] = area;
+        let cell = (reach * (1.0 + 1e-6))
+            .max((x1 - x0) / FIELD_BINS as f64)
+            .max((y1 - y0) / FIELD_BINS as f64)
+            .max(f64::MIN_POSITIVE);
+        let side = |len: f64| ((len / cell) as usize + 1).min(FIELD_BINS + 1);
+        let bins = Bins {
+            origin: DVec2::new(x0, y0),
+            cell,
+            cols: side(x1 - x0),
+            rows: side(y1 - y0),
+        };
+        let inside = |p: DVec2| p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1;
+        let cells = bins.cols * bins.rows;
+        self.bin_start.clear();
+        self.bin_start.resize(cells + 1, 0);
+        for r in self.sim.robots().iter().filter(|r| inside(r.pose.p)) {
+            let (cx, cy) = bins.cell(r.pose.p);
+            self.bin_start[cy * bins.cols + cx + 1] += 1;
+        }
+        for c in 0..cells {
+            self.bin_start[c + 1] += self.bin_start[c];
+        }
+        self.bin_order.clear();
+        self.bin_order.resize(self.bin_start[cells] as usize, 0);
+        // `near` serves as the fill cursor of each cell here.
+        self.near.clear();
+        self.near.extend_from_slice(&self.bin_start[..cells]);
+        for (k, r) in self.sim.robots().iter().enumerate() {
+            if inside(r.pose.p) {
+                let (cx, cy) = bins.cell(r.pose.p);
+                let slot = &mut self.near[cy * bins.cols + cx];
+                self.bin_order[*slot as usize] = k as u32;
+                *slot += 1;
+            }
+        }
+        bins
     }
 
     /// Integral curves of the goal field of robot `index`'s goal (the paper's Fig. 1): from
@@ -521,10 +675,27 @@ impl Live {
     pub fn status(&self) -> &[f64] {
         &self.status
     }
-    /// `[robots · TRAIL_CAPACITY · 3]` trail rings.
+    /// The last field samples ([`Live::sample_field`]).
+    #[must_use]
+    pub fn field(&self) -> &[f64] {
+        &self.field
+    }
+    /// `[robots · trail_capacity · 3]` trail rings.
     #[must_use]
     pub fn trails(&self) -> &[f64] {
         &self.trails
+    }
+    /// Samples per robot in the trail rings: `TRAIL_BUDGET / robots`, at most
+    /// [`TRAIL_CAPACITY`] (2,048 up to 128 robots, 26 for 10,000). The rings span the whole
+    /// run, so a crowd's trails are coarser, not shorter.
+    #[must_use]
+    pub fn trail_capacity(&self) -> usize {
+        self.trail_capacity
+    }
+    /// `[robots]` valid samples in each robot's trail.
+    #[must_use]
+    pub fn trail_lens(&self) -> &[u32] {
+        &self.trail_lens
     }
     /// The slot the next sample is written to (shared by every ring).
     #[must_use]
@@ -534,17 +705,24 @@ impl Live {
     /// Valid samples in robot `index`'s trail (0 for an index out of range).
     #[must_use]
     pub fn trail_len(&self, index: usize) -> usize {
-        self.trail_lens.get(index).copied().unwrap_or(0)
+        self.trail_lens.get(index).map_or(0, |&l| l as usize)
     }
-    /// `[TRAIL_CAPACITY]` ring of the times of the trail samples (s).
+    /// `[trail_capacity]` ring of the times of the trail samples (s).
     #[must_use]
     pub fn trail_times(&self) -> &[f64] {
         &self.trail_times
     }
-    /// `[TRAIL_CAPACITY]` ring of the minimum pair distance at those times.
+    /// `[trail_capacity]` ring of the minimum pair distance at those times.
     #[must_use]
     pub fn trail_min_pair(&self) -> &[f64] {
         &self.trail_min_pair
+    }
+    /// Samples written since the last reset: sample `g` lies in slot `g % trail_capacity`, so
+    /// a reader that drew up to sample `g` draws only what follows (the page's trail layer).
+    /// An edit that changes the ring layout renumbers the kept samples from 0.
+    #[must_use]
+    pub fn recorded(&self) -> usize {
+        self.recorded
     }
     /// Valid samples in the time and pair-distance rings.
     #[must_use]
@@ -556,7 +734,8 @@ impl Live {
     pub fn predicted(&self) -> &[f64] {
         &self.predicted
     }
-    /// Samples per robot in the prediction (at least 1: the current state).
+    /// Samples per robot in the prediction: at least 1 (the current state), 0 for more than
+    /// [`MAX_PREDICTED_ROBOTS`] robots.
     #[must_use]
     pub fn predicted_samples(&self) -> usize {
         self.predicted_samples
@@ -594,22 +773,47 @@ fn check(s: &Scenario) -> Result<(), Error> {
             ),
         });
     }
-    let n = s.robots.len();
-    let work = n * n * steps.min(MAX_PREDICTION_STEPS);
-    if work > MAX_LIVE_WORK {
-        return Err(Error::Invalid {
-            field: "duration".into(),
-            message: format!(
-                "{n} robots over {steps} steps are too much to predict on every edit: robots² · steps must be at most {MAX_LIVE_WORK} (at most {} steps for {n} robots); shorten the duration, raise dt or use fewer robots",
-                MAX_LIVE_WORK / (n * n)
-            ),
-        });
-    }
     Ok(())
 }
 
-fn record_every(s: &Scenario) -> usize {
-    s.steps().div_ceil(TRAIL_CAPACITY - 1).max(1)
+/// Sorts a short, mostly ordered list in place.
+fn insertion_sort(v: &mut [u32]) {
+    for i in 1..v.len() {
+        let x = v[i];
+        let mut j = i;
+        while j > 0 && v[j - 1] > x {
+            v[j] = v[j - 1];
+            j -= 1;
+        }
+        v[j] = x;
+    }
+}
+
+/// Steps between two trail samples, so that a ring of `cap` samples spans the whole run.
+fn record_every(s: &Scenario, cap: usize) -> usize {
+    s.steps().div_ceil(cap - 1).max(1)
+}
+
+/// Samples per robot in the trail ring for `n` robots.
+fn trail_capacity(n: usize) -> usize {
+    (TRAIL_BUDGET / n.max(1)).clamp(2, TRAIL_CAPACITY)
+}
+
+/// The robots binned by [`Live::bin_robots`]: `cols × rows` cells of side `cell` from `origin`.
+struct Bins {
+    origin: DVec2,
+    cell: f64,
+    cols: usize,
+    rows: usize,
+}
+
+impl Bins {
+    /// The cell of `p`, clamped to the grid (a point outside is nearest its border cell).
+    fn cell(&self, p: DVec2) -> (usize, usize) {
+        let c = (p - self.origin) / self.cell;
+        let clamp = |v: f64, n: usize| (v.max(0.0) as usize).min(n - 1);
+        (clamp(c.x, self.cols), clamp(c.y, self.rows))
+    }
 }
 
 fn grid_side(field: &str, n: usize) -> Result<(), Error> {
@@ -641,12 +845,24 @@ fn check_bounds(b: [f64; 4]) -> Result<(), Error> {
     }
 }
 
-/// The smallest distance between two interacting robots now (NaN when there is no pair).
-fn min_pair(sim: &Simulation, independent: bool) -> f64 {
-    if independent {
+/// The smallest distance between two interacting robots now (NaN when there is no pair):
+/// a scan over all pairs for a few robots, the grid search of
+/// [`crate::grid::min_pair_distance`] (the same bits) for more.
+fn min_pair(
+    sim: &Simulation,
+    independent: bool,
+    positions: &mut Vec<DVec2>,
+    search: &mut Neighbours,
+) -> f64 {
+    let r = sim.robots();
+    if independent || r.len() < 2 {
         return f64::NAN;
     }
-    let r = sim.robots();
+    if r.len() > PAIR_SCAN_MAX {
+        positions.clear();
+        positions.extend(r.iter().map(|r| r.pose.p));
+        return min_pair_distance(positions, sim.params().sense_radius, search);
+    }
     let mut m = f64::INFINITY;
     for i in 0..r.len() {
         for j in i + 1..r.len() {
@@ -805,10 +1021,8 @@ mod tests {
                 .collect(),
             ..live.scenario().clone()
         };
-        assert!(Live::new(many)
-            .unwrap_err()
-            .to_string()
-            .starts_with("robots: the playground"));
+        let e = Live::new(many).unwrap_err().to_string();
+        assert!(e.starts_with("robots: at most 10000"), "{e}");
         let mut long = live.scenario().clone();
         long.duration = 3_000.0;
         long.dt = 0.002;
@@ -817,21 +1031,126 @@ mod tests {
             e.starts_with("duration: the playground runs at most"),
             "{e}"
         );
-        let crowd = Scenario {
-            robots: (0..100)
+    }
+
+    /// A prediction runs at most PREDICTION_WORK robot-steps ahead, and none above
+    /// MAX_PREDICTED_ROBOTS robots; the simulation itself takes any count up to the limit.
+    #[test]
+    fn predictions_are_bounded_by_work_and_stop_above_the_robot_limit() {
+        let line = |n: usize| Scenario {
+            robots: (0..n)
                 .map(|k| RobotSpec {
                     start: [k as f64 * 3.0, 0.0, 0.0],
-                    goal: [k as f64 * 3.0, 50.0, 0.0],
+                    goal: [k as f64 * 3.0, 500.0, 0.0],
                 })
                 .collect(),
             duration: 60.0,
-            ..live.scenario().clone()
+            obstacles: vec![],
+            ..two()
         };
-        let e = Live::new(crowd).unwrap_err().to_string();
-        assert!(
-            e.starts_with("duration: 100 robots over 6000 steps are too much"),
-            "{e}"
-        );
+        let live = Live::new(line(MAX_PREDICTED_ROBOTS)).unwrap();
+        let horizon = PREDICTION_WORK / MAX_PREDICTED_ROBOTS;
+        assert!(horizon < live.scenario().steps());
+        let last = live.predicted_times()[live.predicted_samples() - 1];
+        assert_close!(last, horizon as f64 * live.scenario().dt, 1e-9);
+        let mut live = Live::new(line(MAX_PREDICTED_ROBOTS + 1)).unwrap();
+        assert_eq!(live.predicted_samples(), 0);
+        assert!(live.predicted().is_empty() && live.predicted_times().is_empty());
+        assert_eq!(live.step(10), 10);
+        assert_eq!(live.poses().len(), (MAX_PREDICTED_ROBOTS + 1) * POSE_STRIDE);
+    }
+
+    /// Trails share a fixed budget: fewer samples per robot in a crowd. When an edit changes
+    /// the capacity, the newest samples are kept in time order.
+    #[test]
+    fn trail_rings_shrink_with_the_crowd_and_keep_the_newest_samples() {
+        let s = crate::presets::crowd(100);
+        let mut live = Live::new(s).unwrap();
+        assert_eq!(live.trail_capacity(), TRAIL_CAPACITY);
+        while live.history_len() < 1_500 {
+            live.step(live.record_every);
+            assert_eq!(live.trail_head(), live.recorded() % TRAIL_CAPACITY);
+        }
+        let (t, pose0) = (live.time(), live.poses()[..3].to_vec());
+        let times = live.trail_times().to_vec();
+        let head = live.trail_head();
+        // 100 more robots, far outside the crowd, at t > 0.
+        let mut s = live.scenario().clone();
+        for k in 0..100 {
+            let x = 1_000.0 + 5.0 * k as f64;
+            s.robots.push(RobotSpec {
+                start: [x, 0.0, 0.0],
+                goal: [x, 50.0, 0.0],
+            });
+        }
+        live.edit(s).unwrap();
+        let cap = TRAIL_BUDGET / 200;
+        assert!(cap < 1_500);
+        assert_eq!(live.trail_capacity(), cap);
+        assert_eq!(live.history_len(), cap);
+        assert_eq!(live.trails().len(), 200 * cap * POSE_STRIDE);
+        assert_eq!(live.trail_times().len(), cap);
+        assert_eq!(live.trail_len(0), cap);
+        assert_eq!(live.trail_len(199), 0);
+        assert_eq!(live.recorded(), cap);
+        assert_eq!(live.trail_head(), live.recorded() % cap);
+        // The newest sample is still the pose now, and the times are the newest, in order.
+        let newest = (live.trail_head() + cap - 1) % cap;
+        assert_eq!(&live.trails()[newest * 3..newest * 3 + 3], &pose0[..]);
+        assert_eq!(live.trail_times()[newest], t);
+        for k in 0..cap {
+            let old = (head + TRAIL_CAPACITY - cap + k) % TRAIL_CAPACITY;
+            assert_eq!(live.trail_times()[k], times[old]);
+        }
+    }
+
+    /// The field samples bin the robots by cell; they are those of a scan over all robots,
+    /// bit for bit, in a crowd and at a zoom that puts many cells in view.
+    #[test]
+    fn binned_field_samples_equal_the_scan() {
+        let mut live = Live::new(crate::presets::crowd(300)).unwrap();
+        live.step(150);
+        for (bounds, side) in [
+            ([-200.0, -200.0, 200.0, 200.0], 40),
+            ([150.0, -30.0, 230.0, 30.0], 23),
+            ([-5e6, -5e6, 5e6, 5e6], 7),
+        ] {
+            let index = 17;
+            let got = live
+                .sample_field(index, bounds, side, side)
+                .unwrap()
+                .to_vec();
+            let sim = live.simulation();
+            let robot = &sim.robots()[index];
+            let params = *sim.params();
+            let rs = params.sense_radius;
+            for k in 0..side * side {
+                let pose = Pose::new(got[4 * k], got[4 * k + 1], robot.pose.theta);
+                let neighbours: Vec<Neighbour> = sim
+                    .robots()
+                    .iter()
+                    .enumerate()
+                    .filter(|&(j, o)| j != index && o.pose.p.distance_squared(pose.p) <= rs * rs)
+                    .map(|(_, o)| Neighbour {
+                        position: o.pose.p,
+                        speed: o.last.command.v.abs(),
+                    })
+                    .collect();
+                let e = evaluate(
+                    &params,
+                    pose,
+                    pose.error_to(robot.goal),
+                    robot.last.command.v.abs(),
+                    sim.obstacles().iter(),
+                    neighbours.iter().copied(),
+                );
+                assert_eq!(
+                    [got[4 * k + 2], got[4 * k + 3]],
+                    [e.field.x, e.field.y],
+                    "{bounds:?} {k}"
+                );
+            }
+        }
     }
 
     /// Editing a goal at t > 0 keeps the clock and the poses, adds a robot at its start, and

@@ -343,14 +343,14 @@ impl Scenario {
         if !self.independent {
             let safe = 2.0 * p.safe_radius;
             let starts: Vec<DVec2> = self.robots.iter().map(|r| r.start_pose().p).collect();
-            if let Some((i, j, d)) = closest_pair_below(&starts, safe) {
+            if let Some((i, j, d)) = crate::grid::closest_pair_below(&starts, safe) {
                 return invalid(
                     &format!("robots[{j}].start"),
                     format!("is {d} from robots[{i}].start, closer than the safe distance 2 · safe_radius = {safe}: robots may not start in each other's safe disc"),
                 );
             }
             let goals: Vec<DVec2> = self.robots.iter().map(|r| r.goal_pose().p).collect();
-            if let Some((i, j, d)) = closest_pair_below(&goals, safe) {
+            if let Some((i, j, d)) = crate::grid::closest_pair_below(&goals, safe) {
                 return invalid(
                     &format!("robots[{j}].goal"),
                     format!("is {d} from robots[{i}].goal, closer than the safe distance 2 · safe_radius = {safe}: both robots cannot settle there"),
@@ -359,19 +359,6 @@ impl Scenario {
         }
         Ok(())
     }
-}
-
-/// The pair `(i, j, distance)` with `i < j` of `points` closer than `limit` with the smallest
-/// `j` (then `i`), or `None` if every pair is at least `limit` apart. All pairs are compared:
-/// 5·10⁷ distances for the 10,000 robots of the limit, a fraction of a second, once per
-/// validation.
-fn closest_pair_below(points: &[DVec2], limit: f64) -> Option<(usize, usize, f64)> {
-    points.iter().enumerate().find_map(|(j, b)| {
-        points[..j].iter().enumerate().find_map(|(i, a)| {
-            let d = a.distance(*b);
-            (d < limit).then_some((i, j, d))
-        })
-    })
 }
 
 fn invalid<T>(field: &str, message: impl Into<String>) -> Result<T, Error> {

@@ -275,8 +275,7 @@ impl Simulation {
             // whole state is some 200 bytes.
             self.positions.clear();
             self.positions.extend(self.robots.iter().map(|r| r.pose.p));
-            let positions = &self.positions;
-            self.near.build(|i| positions[i], positions.len(), reach);
+            self.near.build_points(&self.positions, reach);
         }
         for i in 0..self.robots.len() {
             let me = self.robots[i];

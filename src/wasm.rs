@@ -287,21 +287,30 @@ impl CrowdBench {
 /// - [`poses`](Playground::poses) `[robots · 3]`: `x, y, θ` now (m, m, rad in `(−π, π]`).
 /// - [`status`](Playground::status) `[robots · 6]`: `v, ω, Π ς_i, ς_c, vo_x, vo_y` now
 ///   (m/s, rad/s, obstacle keep, robot keep; the virtual obstacle, NaN when there is none).
-/// - [`trails`](Playground::trails) `[robots · TRAIL_CAPACITY · 3]`: one ring of past
-///   `x, y, θ` per robot. The next slot written is [`trailHead`](Playground::trail_head),
-///   shared by all; robot `i` holds its last [`trailLength`](Playground::trail_length)`(i)`
-///   samples, the oldest at `(head − len + TRAIL_CAPACITY) % TRAIL_CAPACITY`.
+/// - [`trails`](Playground::trails) `[robots · cap · 3]`, `cap` =
+///   [`trailCapacity`](Playground::trail_capacity): one ring of past `x, y, θ` per robot.
+///   The next slot written is [`trailHead`](Playground::trail_head), shared by all; robot `i`
+///   holds its last [`trailLength`](Playground::trail_length)`(i)` samples (all of them:
+///   `trailLengths`, a `Uint32Array [robots]`), the oldest at `(head − len + cap) % cap`.
 ///   [`trailTimes`](Playground::trail_times) and [`trailMinPair`](Playground::trail_min_pair)
-///   `[TRAIL_CAPACITY]` are rings of the same slots (time in s, the smallest distance between
+///   `[cap]` are rings of the same slots (time in s, the smallest distance between
 ///   two robots, NaN for none), [`historyLength`](Playground::history_length) long.
-///   [`trailsPointer`](Playground::trails_pointer) gives the rings' address for a view
-///   into the module's memory instead of a copy.
-/// - [`predicted`](Playground::predicted) `[robots · samples · 3]`: `x, y, θ` from now to the
-///   end, sample 0 now; [`predictedTimes`](Playground::predicted_times) and
+/// - [`predicted`](Playground::predicted) `[robots · samples · 3]`: `x, y, θ` from now on,
+///   sample 0 now (no samples above 100 robots); [`predictedTimes`](Playground::predicted_times) and
 ///   [`predictedMinPair`](Playground::predicted_min_pair) `[samples]`.
 /// - [`sampleField`](Playground::sample_field) `[nx · ny · 4]`: `x, y, Γx, Γy`, row by row
 ///   from `ymin`.
 /// - [`integralCurves`](Playground::integral_curves) `[n · n · CURVE_POINTS · 2]`: `x, y`.
+///
+/// # Views instead of copies
+/// Each array above also has a `…Pointer` getter (`posesPointer`, `statusPointer`,
+/// `trailsPointer`, `trailLengthsPointer`, `trailTimesPointer`, `trailMinPairPointer`,
+/// `predictedPointer`, `predictedTimesPointer`, `predictedMinPairPointer`): its address in the
+/// module's memory, for `new Float64Array(memory.buffer, pointer, length)` (`Uint32Array` for
+/// the trail lengths). A view costs no copy; it is valid until the next call that steps or
+/// edits (which may move the array, or grow the memory and detach every view), so a page
+/// re-reads the pointers after such calls and makes views only when one changed. Stepping
+/// never moves the arrays of a fixed robot count.
 ///
 /// Indices and counts arrive as JS numbers and are checked (NaN, negative, fractional and
 /// out-of-range values are errors, never a wrapped index).
@@ -436,20 +445,80 @@ impl Playground {
         Float64Array::from(self.live.status())
     }
 
-    /// `[robots · TRAIL_CAPACITY · 3]`: see [`Playground`].
+    /// `[robots · trailCapacity · 3]`: see [`Playground`].
     #[must_use]
     pub fn trails(&self) -> Float64Array {
         Float64Array::from(self.live.trails())
     }
 
-    /// Address of the trail rings in the module's memory, for reading them without a copy:
-    /// `new Float64Array(memory.buffer, trailsPointer, robots · TRAIL_CAPACITY · 3)`. The view
-    /// is valid until the next call into the module (a call may move or grow the memory):
-    /// make it just before reading.
+    /// Samples per robot in the trail rings (2,048 up to 128 robots, fewer in a crowd).
+    #[wasm_bindgen(getter, js_name = trailCapacity)]
+    #[must_use]
+    pub fn trail_capacity(&self) -> usize {
+        self.live.trail_capacity()
+    }
+
+    /// Address of [`poses`](Playground::poses) (see "Views instead of copies").
+    #[wasm_bindgen(getter, js_name = posesPointer)]
+    #[must_use]
+    pub fn poses_pointer(&self) -> usize {
+        self.live.poses().as_ptr() as usize
+    }
+
+    /// Address of [`status`](Playground::status).
+    #[wasm_bindgen(getter, js_name = statusPointer)]
+    #[must_use]
+    pub fn status_pointer(&self) -> usize {
+        self.live.status().as_ptr() as usize
+    }
+
+    /// Address of [`trails`](Playground::trails).
     #[wasm_bindgen(getter, js_name = trailsPointer)]
     #[must_use]
     pub fn trails_pointer(&self) -> usize {
         self.live.trails().as_ptr() as usize
+    }
+
+    /// Address of the `Uint32Array [robots]` of trail lengths.
+    #[wasm_bindgen(getter, js_name = trailLengthsPointer)]
+    #[must_use]
+    pub fn trail_lengths_pointer(&self) -> usize {
+        self.live.trail_lens().as_ptr() as usize
+    }
+
+    /// Address of [`trailTimes`](Playground::trail_times).
+    #[wasm_bindgen(getter, js_name = trailTimesPointer)]
+    #[must_use]
+    pub fn trail_times_pointer(&self) -> usize {
+        self.live.trail_times().as_ptr() as usize
+    }
+
+    /// Address of [`trailMinPair`](Playground::trail_min_pair).
+    #[wasm_bindgen(getter, js_name = trailMinPairPointer)]
+    #[must_use]
+    pub fn trail_min_pair_pointer(&self) -> usize {
+        self.live.trail_min_pair().as_ptr() as usize
+    }
+
+    /// Address of [`predicted`](Playground::predicted).
+    #[wasm_bindgen(getter, js_name = predictedPointer)]
+    #[must_use]
+    pub fn predicted_pointer(&self) -> usize {
+        self.live.predicted().as_ptr() as usize
+    }
+
+    /// Address of [`predictedTimes`](Playground::predicted_times).
+    #[wasm_bindgen(getter, js_name = predictedTimesPointer)]
+    #[must_use]
+    pub fn predicted_times_pointer(&self) -> usize {
+        self.live.predicted_times().as_ptr() as usize
+    }
+
+    /// Address of [`predictedMinPair`](Playground::predicted_min_pair).
+    #[wasm_bindgen(getter, js_name = predictedMinPairPointer)]
+    #[must_use]
+    pub fn predicted_min_pair_pointer(&self) -> usize {
+        self.live.predicted_min_pair().as_ptr() as usize
     }
 
     /// The ring slot written next.
@@ -468,18 +537,26 @@ impl Playground {
         Ok(self.live.trail_len(self.index(index)?))
     }
 
-    /// `[TRAIL_CAPACITY]` ring of sample times (s).
+    /// `[trailCapacity]` ring of sample times (s).
     #[wasm_bindgen(js_name = trailTimes)]
     #[must_use]
     pub fn trail_times(&self) -> Float64Array {
         Float64Array::from(self.live.trail_times())
     }
 
-    /// `[TRAIL_CAPACITY]` ring of minimum pair distances (NaN: no pair).
+    /// `[trailCapacity]` ring of minimum pair distances (NaN: no pair).
     #[wasm_bindgen(js_name = trailMinPair)]
     #[must_use]
     pub fn trail_min_pair(&self) -> Float64Array {
         Float64Array::from(self.live.trail_min_pair())
+    }
+
+    /// Samples written since the last reset: sample `g` is in ring slot `g % trailCapacity`
+    /// (see `Live::recorded`).
+    #[wasm_bindgen(getter, js_name = trailRecorded)]
+    #[must_use]
+    pub fn trail_recorded(&self) -> usize {
+        self.live.recorded()
     }
 
     /// Samples held in the time and pair-distance rings.
@@ -543,6 +620,40 @@ impl Playground {
         Ok(Float64Array::from(out))
     }
 
+    /// [`sampleField`](Playground::sample_field) without the copy: the samples stay in the
+    /// module's memory at [`fieldPointer`](Playground::field_pointer); returns their count of
+    /// values (`nx · ny · 4`).
+    ///
+    /// # Errors
+    /// A bad index, grid side or box.
+    #[wasm_bindgen(js_name = refreshField)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn refresh_field(
+        &mut self,
+        index: f64,
+        xmin: f64,
+        ymin: f64,
+        xmax: f64,
+        ymax: f64,
+        nx: f64,
+        ny: f64,
+    ) -> Result<usize, JsError> {
+        let i = self.index(index)?;
+        let nx = whole("nx", nx, live::MAX_GRID_SIDE)?;
+        let ny = whole("ny", ny, live::MAX_GRID_SIDE)?;
+        self.live
+            .sample_field(i, [xmin, ymin, xmax, ymax], nx, ny)
+            .map(<[f64]>::len)
+            .map_err(js_error)
+    }
+
+    /// Address of the last field samples (see "Views instead of copies").
+    #[wasm_bindgen(getter, js_name = fieldPointer)]
+    #[must_use]
+    pub fn field_pointer(&self) -> usize {
+        self.live.field().as_ptr() as usize
+    }
+
     /// Integral curves of robot `index`'s goal field from an `n × n` grid of starts over the
     /// box, all with attitude `theta0` (rad) at the start.
     ///
@@ -592,7 +703,8 @@ pub const FIELD_STRIDE: usize = live::FIELD_STRIDE;
 
 /// The playground's layout constants as an object, so that the page reads them rather than
 /// copying them: `{trailCapacity, predictionSamples, curvePoints, maxGridSide, maxCurveSide,
-/// maxRobots}`.
+/// maxRobots, maxPredictedRobots, crowdMax}` (`trailCapacity` is the largest; a scene's own is
+/// [`Playground::trail_capacity`]).
 ///
 /// # Errors
 /// Only if the JS engine refuses to build the object.
@@ -607,6 +719,8 @@ pub fn playground_limits() -> Result<JsValue, JsError> {
         max_grid_side: usize,
         max_curve_side: usize,
         max_robots: usize,
+        max_predicted_robots: usize,
+        crowd_max: usize,
     }
     to_js(&Limits {
         trail_capacity: live::TRAIL_CAPACITY,
@@ -615,6 +729,8 @@ pub fn playground_limits() -> Result<JsValue, JsError> {
         max_grid_side: live::MAX_GRID_SIDE,
         max_curve_side: live::MAX_CURVE_SIDE,
         max_robots: live::MAX_LIVE_ROBOTS,
+        max_predicted_robots: live::MAX_PREDICTED_ROBOTS,
+        crowd_max: presets::CROWD_MAX,
     })
 }
 

@@ -2,12 +2,13 @@
 //! `wasm-pack test --headless --chrome -- --test web_facade`.
 #![cfg(target_arch = "wasm32")]
 
-use dvf::live::{CURVE_POINTS, MAX_LIVE_ROBOTS, TRAIL_CAPACITY};
+use dvf::live::{CURVE_POINTS, MAX_LIVE_ROBOTS, MAX_PREDICTED_ROBOTS, TRAIL_CAPACITY};
 use dvf::presets::{DEFAULT_PRESET, PRESETS};
 use dvf::wasm::{
     default_preset, playground_limits, preset_scenario, presets, Playground, Run, FIELD_STRIDE,
     POSE_STRIDE, SAMPLE_STRIDE, STATUS_STRIDE,
 };
+use js_sys::Float64Array;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_test::{wasm_bindgen_test, wasm_bindgen_test_configure};
 
@@ -165,6 +166,96 @@ fn playground_arrays_have_the_documented_layouts() {
         get(&limits, "maxRobots").as_f64(),
         Some(MAX_LIVE_ROBOTS as f64)
     );
+    assert_eq!(
+        get(&limits, "maxPredictedRobots").as_f64(),
+        Some(MAX_PREDICTED_ROBOTS as f64)
+    );
+}
+
+/// The `len` values at `ptr` in the module's memory, read through a `Float64Array` view. The
+/// output is allocated first: an allocation may grow the memory and detach a view made before.
+fn view(ptr: usize, len: usize) -> Vec<f64> {
+    let mut out = vec![0.0; len];
+    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
+    Float64Array::new_with_byte_offset_and_length(&memory.buffer(), ptr as u32, len as u32)
+        .copy_to(&mut out);
+    out
+}
+
+/// The same through a `Uint32Array` view.
+fn view_u32(ptr: usize, len: usize) -> Vec<u32> {
+    let mut out = vec![0; len];
+    let memory: js_sys::WebAssembly::Memory = wasm_bindgen::memory().unchecked_into();
+    js_sys::Uint32Array::new_with_byte_offset_and_length(&memory.buffer(), ptr as u32, len as u32)
+        .copy_to(&mut out);
+    out
+}
+
+/// Every pointer getter addresses the array its copying twin returns, at every step; the
+/// crowd plays with no prediction and smaller trail rings.
+#[wasm_bindgen_test]
+fn pointers_address_the_arrays_they_name() {
+    for name in [DEFAULT_PRESET, "crowd-1000"] {
+        let mut pg = Playground::from_preset(name).unwrap();
+        let n = pg.robot_count();
+        for _ in 0..3 {
+            pg.step(7.0).unwrap();
+            let cap = pg.trail_capacity();
+            assert_eq!(
+                view(pg.poses_pointer(), n * POSE_STRIDE),
+                pg.poses().to_vec()
+            );
+            let status = pg.status().to_vec();
+            let seen = view(pg.status_pointer(), n * STATUS_STRIDE);
+            // NaN marks "no virtual obstacle": compare bit patterns.
+            assert!(status
+                .iter()
+                .zip(&seen)
+                .all(|(a, b)| a.to_bits() == b.to_bits()));
+            let trails = pg.trails().to_vec();
+            let seen = view(pg.trails_pointer(), n * cap * POSE_STRIDE);
+            assert!(trails
+                .iter()
+                .zip(&seen)
+                .all(|(a, b)| a.to_bits() == b.to_bits()));
+            assert_eq!(
+                view(pg.trail_times_pointer(), 1)[0],
+                pg.trail_times().to_vec()[0]
+            );
+            let lens = view_u32(pg.trail_lengths_pointer(), n);
+            assert!(lens
+                .iter()
+                .enumerate()
+                .all(|(i, &l)| l as usize == pg.trail_length(i as f64).unwrap()));
+            assert_eq!(pg.trail_head(), pg.trail_recorded() % cap);
+            let len = pg
+                .refresh_field(3.0, -40.0, -30.0, 40.0, 30.0, 9.0, 7.0)
+                .unwrap();
+            assert_eq!(len, 9 * 7 * FIELD_STRIDE);
+            let seen = view(pg.field_pointer(), len);
+            let copy = pg
+                .sample_field(3.0, -40.0, -30.0, 40.0, 30.0, 9.0, 7.0)
+                .unwrap()
+                .to_vec();
+            assert_eq!(seen, copy);
+            let samples = pg.predicted_samples();
+            assert_eq!(
+                view(pg.predicted_pointer(), n * samples * POSE_STRIDE),
+                pg.predicted().to_vec()
+            );
+            assert_eq!(
+                view(pg.predicted_times_pointer(), samples),
+                pg.predicted_times().to_vec()
+            );
+        }
+        if n > MAX_PREDICTED_ROBOTS {
+            assert_eq!(pg.predicted_samples(), 0);
+            assert!(pg.trail_capacity() < TRAIL_CAPACITY);
+        } else {
+            assert!(pg.predicted_samples() >= 2);
+            assert_eq!(pg.trail_capacity(), TRAIL_CAPACITY);
+        }
+    }
 }
 
 #[wasm_bindgen_test]
@@ -277,10 +368,7 @@ fn playground_rejects_bad_input_with_the_field_named() {
             .join(",")
     );
     let m = message(Playground::new(many.into()).err().unwrap());
-    assert!(
-        m.starts_with("robots: the playground simulates at most"),
-        "{m}"
-    );
+    assert!(m.starts_with("robots: at most 10000 robots"), "{m}");
     // A scenario too long to predict on every edit is refused before it can freeze the page.
     let long = r#"{"duration":3000,"dt":0.002,"robots":[{"start":[0,0,0],"goal":[1,2,3]}]}"#;
     let m = message(Playground::new(long.into()).err().unwrap());

@@ -14,9 +14,10 @@
 
 import init, { Playground, defaultPreset, playgroundLimits, presetScenario, presets } from './pkg/dvf.js';
 import {
-  FIELD_SPACING_PX, HANDLE_RADIUS_PX, POSE_STRIDE, drawScene, fitCanvas, fittedCamera,
-  handlePoint, makeView, robotColour,
+  FIELD_SPACING_PX, HANDLE_RADIUS_PX, POSE_STRIDE, STATUS_STRIDE, TRAIL_SETTLE_MS, TrailLayer, drawScene,
+  fitCanvas, fittedCamera, handlePoint, makeView, robotColour,
 } from './render.js';
+import { GlyphLayer } from './glyphs.js';
 import { HEADING_COLOUR, PAIR_COLOUR, POSITION_COLOUR, SAFE_COLOUR, drawPlot, plotSeries } from './plots.js';
 import { buildLegend, buildParams, fillParams } from './panels.js';
 import { MAX_SCENARIO_BYTES, download, fileStem, readScenarioFile, trajectoriesCsv } from './io.js';
@@ -24,12 +25,21 @@ import { MAX_SCENARIO_BYTES, download, fileStem, readScenarioFile, trajectoriesC
 /** The module is fetched and compiled once per page, whatever the number of instances. */
 const WASM_READY = init().then((wasm) => ({ memory: wasm.memory, limits: playgroundLimits(), presets: presets() }));
 
-const NO_TRAILS = new Float64Array(0);
 /** Playback speeds offered (simulated seconds per wall-clock second). */
 const SPEEDS = [0.25, 0.5, 1, 2, 4];
 const DEFAULT_SPEED = 1;
 /** A frame never advances more than this wall time (s): a hidden tab does not jump ahead. */
 const MAX_FRAME_WALL_S = 0.1;
+/**
+ * A frame spends at most about this long stepping (ms): a crowd too large for real time plays
+ * slower (the clock says by how much) rather than making every frame longer than the last.
+ */
+const STEP_BUDGET_MS = 20;
+/** Frame work times kept for the benchmark (a ring; see `stats`). */
+const WORK_SAMPLES = 600;
+/** A crowd loaded from the menu has this many robots unless the N box says otherwise. */
+const DEFAULT_CROWD = 1000;
+const CROWD_PREFIX = 'crowd-';
 /** The Step button and the S key advance this much simulated time (s). */
 const STEP_TIME_S = 0.1;
 /** Hit radius around robots, goals and handles (CSS px). */
@@ -44,8 +54,9 @@ const ZOOM_STEP = 1.2;
 const MAX_FIELD_SIDE = 60;
 /** Integral curves start from an n × n grid over the scenario's bounds. */
 const CURVE_GRID = 9;
-/** Undo keeps at most this many scenarios. */
+/** Undo keeps at most this many scenarios, and at most UNDO_CHARS characters of them. */
 const UNDO_LIMIT = 200;
+const UNDO_CHARS = 32 * 1024 * 1024;
 /** Default θ(0) of the integral curves (degrees): the paper's Fig. 1. */
 const DEFAULT_THETA0_DEG = 90;
 /** A new obstacle's radius as a fraction of the view's smaller side; its ring is twice that. */
@@ -59,6 +70,7 @@ const TEMPLATE = `
   <div class="toolbar" role="toolbar" aria-label="Playground controls">
     <span class="group full">
       <label>Preset <select data-id="preset" aria-label="Load a preset of the paper's examples"></select></label>
+      <label data-id="crowd-box" hidden>N <input data-id="crowd-n" class="crowd-n" type="number" min="1" step="1" aria-label="Robots in the crowd"></label>
     </span>
     <span class="group">
       <button type="button" data-id="play" aria-pressed="false" title="Play / pause (Space)">Play</button>
@@ -148,12 +160,26 @@ export class DvfPlayground extends HTMLElement {
     this.frameRequested = false;
     this.curvesKey = '';
     this.curves = null;
+    /** Views into wasm memory, remade only when an array moved or the memory grew. */
+    this.views = null;
+    this.trailLayer = new TrailLayer();
+    this.glyphLayer = new GlyphLayer();
+    /** Bumped by every edit, load and reset: the trail layer redraws from scratch. */
+    this.generation = 0;
+    /** Mean wall time of one step (ms), for the step budget; null before the first. */
+    this.stepMs = null;
+    /** Simulated over wall-clock time in the last frames (1 when the speed is kept). */
+    this.rate = 1;
     /**
      * Diagnostics read by the end-to-end tests: frames drawn, when the first was (ms since the
      * page's time origin), the time of the last edit with its prediction, and the work of the
      * last and the slowest frame (ms).
      */
-    this.stats = { frames: 0, lastEditMs: 0, frameWorkMs: 0, maxFrameWorkMs: 0 };
+    this.stats = {
+      frames: 0, lastEditMs: 0, frameWorkMs: 0, maxFrameWorkMs: 0,
+      // The work of the last WORK_SAMPLES frames (ms), a ring written at `workCount % length`.
+      work: new Float64Array(WORK_SAMPLES), workCount: 0,
+    };
     let resolveLoaded;
     /** Resolves once the first scene is shown. */
     this.loaded = new Promise((r) => { resolveLoaded = r; });
@@ -200,6 +226,7 @@ export class DvfPlayground extends HTMLElement {
       this.memory = memory;
       this.limits = limits;
       this.presetList = list;
+      this.views = new WasmViews(memory);
     } catch (e) {
       this.showMessage(`Could not load the simulator (pkg/dvf_bg.wasm): ${e.message ?? e}. Build it with "make build-wasm".`);
       return;
@@ -217,6 +244,14 @@ export class DvfPlayground extends HTMLElement {
       o.title = p.summary;
       select.append(o);
     }
+    const crowd = document.createElement('option');
+    crowd.value = 'crowd';
+    crowd.textContent = 'crowd of N robots';
+    crowd.title = `N robots (1 to ${this.limits.crowdMax}) swap antipodally on a circle, keeping their headings`;
+    select.append(crowd);
+    const crowdN = this.$('crowd-n');
+    crowdN.max = String(this.limits.crowdMax);
+    crowdN.value = String(DEFAULT_CROWD);
     this.readDisplayAttributes();
     const src = this.getAttribute('src');
     let ok = false;
@@ -250,6 +285,11 @@ export class DvfPlayground extends HTMLElement {
     this.undoStack = [];
     this.redoStack = [];
     this.updateButtons();
+  }
+
+  /** The name of the preset shown, or null once the scene has been edited or imported. */
+  presetName() {
+    return this.cache?.presetName ?? null;
   }
 
   /** The current scenario as a plain object (edits included; the JSON scenario format). */
@@ -316,16 +356,37 @@ export class DvfPlayground extends HTMLElement {
     try {
       const pg = Playground.fromPreset(name);
       if (edit && this.pg) this.pushUndo();
-      this.replace(pg, { fit: true });
-      this.$('preset').value = name;
+      this.replace(pg, { fit: true, presetName: name });
       this.showMessage('');
       if (edit) this.emitChange('preset');
       return true;
     } catch (e) {
       if (!quiet) this.showMessage(e.message ?? String(e));
-      if (this.cache) this.$('preset').value = this.cache.presetName ?? '';
+      this.showPresetName();
       return false;
     }
+  }
+
+  /** Loads a crowd of the N in the N box (as an edit); a bad N is named and changes nothing. */
+  loadCrowd() {
+    const box = this.$('crowd-n');
+    const n = Number(box.value);
+    const max = this.limits.crowdMax;
+    if (!Number.isInteger(n) || n < 1 || n > max) {
+      this.showMessage(`crowd: N must be a whole number from 1 to ${max}, not ${box.value || 'empty'}`);
+      this.showPresetName();
+      return false;
+    }
+    return this.loadPreset(`${CROWD_PREFIX}${n}`, { edit: true });
+  }
+
+  /** The preset menu (and N box) showing the scene's preset, or "(edited or imported)". */
+  showPresetName() {
+    const name = this.cache?.presetName ?? '';
+    const crowd = name.startsWith(CROWD_PREFIX);
+    this.$('preset').value = crowd ? 'crowd' : name;
+    this.$('crowd-box').hidden = !crowd;
+    if (crowd) this.$('crowd-n').value = name.slice(CROWD_PREFIX.length);
   }
 
   /** Fetches and loads the scenario at `url`; on failure shows why and keeps the scene. */
@@ -344,7 +405,7 @@ export class DvfPlayground extends HTMLElement {
     }
   }
 
-  replace(pg, { fit }) {
+  replace(pg, { fit, presetName = null }) {
     const old = this.pg;
     this.pg = pg;
     old?.free();
@@ -352,11 +413,13 @@ export class DvfPlayground extends HTMLElement {
     this.selection = null;
     this.focusRobot = 0;
     this.curvesKey = '';
+    this.stepMs = null;
     if (fit) this.userCamera = false;
     this.refreshCache();
-    const presetName = this.presetList.find((p) => sameScenario(presetScenario(p.name), this.cache.scenario))?.name;
-    this.cache.presetName = presetName;
-    this.$('preset').value = presetName ?? '';
+    this.cache.presetName = presetName
+      ?? this.presetList.find((p) => sameScenario(presetScenario(p.name), this.cache.scenario))?.name
+      ?? null;
+    this.showPresetName();
     fillParams(this.paramInputs, this.cache.scenario.params, this.shadowRoot);
     this.updateButtons();
     this.requestDraw();
@@ -378,6 +441,13 @@ export class DvfPlayground extends HTMLElement {
     return true;
   }
 
+  /** After an edit the scene is no longer the preset it came from. */
+  markEdited() {
+    if (!this.cache.presetName) return;
+    this.cache.presetName = null;
+    this.showPresetName();
+  }
+
   /** One whole edit: snapshot for undo, apply, announce. */
   edit(mutate, kind) {
     const s = this.scenario();
@@ -395,7 +465,10 @@ export class DvfPlayground extends HTMLElement {
 
   pushUndo(text = this.scenarioText()) {
     this.undoStack.push(text);
-    if (this.undoStack.length > UNDO_LIMIT) this.undoStack.shift();
+    let chars = this.undoStack.reduce((sum, t) => sum + t.length, 0);
+    while (this.undoStack.length > 1 && (this.undoStack.length > UNDO_LIMIT || chars > UNDO_CHARS)) {
+      chars -= this.undoStack.shift().length;
+    }
     this.redoStack = [];
     this.updateButtons();
   }
@@ -424,40 +497,67 @@ export class DvfPlayground extends HTMLElement {
   }
 
   emitChange(kind) {
+    if (kind !== 'preset') this.markEdited();
     this.dispatchEvent(new CustomEvent('change', { detail: { kind } }));
   }
 
-  /** Re-reads everything the drawing needs from wasm (after a step or an edit). */
+  /**
+   * Re-reads what the drawing needs from wasm after a step (`withScenario` false) or an edit,
+   * load or reset. The arrays (poses, status, trails, …) are getters that return views into
+   * wasm memory (see WasmViews), never copies; only the scenario object is rebuilt, and only
+   * after an edit.
+   */
   refreshCache(withScenario = true) {
     const pg = this.pg;
-    const presetName = this.cache?.presetName;
-    this.cache = {
-      presetName,
-      scenario: withScenario || !this.cache ? pg.scenario() : this.cache.scenario,
-      time: pg.time,
-      duration: pg.duration,
-      poses: pg.poses(),
-      status: pg.status(),
-      // The rings are read in place (see trailsView), never copied.
-      trails: NO_TRAILS,
-      trailHead: pg.trailHead,
-      trailLens: Array.from({ length: pg.robotCount }, (_, i) => pg.trailLength(i)),
-      trailTimes: pg.trailTimes(),
-      trailMinPair: pg.trailMinPair(),
-      historyLength: pg.historyLength,
-      trailCapacity: this.limits.trailCapacity,
-      predicted: pg.predicted(),
-      predictedSamples: pg.predictedSamples,
-      predictedTimes: pg.predictedTimes(),
-      predictedMinPair: pg.predictedMinPair(),
-    };
+    if (!this.cache) this.cache = this.makeCache();
+    const c = this.cache;
+    if (withScenario || !c.scenario) {
+      c.scenario = pg.scenario();
+      this.generation += 1;
+    }
+    c.time = pg.time;
+    c.duration = pg.duration;
+    c.trailHead = pg.trailHead;
+    c.historyLength = pg.historyLength;
+    c.recorded = pg.trailRecorded;
+    c.trailCapacity = pg.trailCapacity;
+    c.predictedSamples = pg.predictedSamples;
     this.fixSelection();
+  }
+
+  /**
+   * The cache object, whose arrays are views of the wasm arrays made when read. A view stays
+   * valid until the memory grows, which any call into the module may do (another instance on
+   * the page included), so it is re-checked on every read: a pointer read and a comparison,
+   * and a new view only when the array moved or the memory grew.
+   */
+  makeCache() {
+    const cache = { presetName: null, scenario: null };
+    const lengths = {
+      poses: (pg) => pg.robotCount * POSE_STRIDE,
+      status: (pg) => pg.robotCount * STATUS_STRIDE,
+      trails: (pg, c) => pg.robotCount * c.trailCapacity * POSE_STRIDE,
+      trailLengths: (pg) => pg.robotCount,
+      trailTimes: (pg, c) => c.trailCapacity,
+      trailMinPair: (pg, c) => c.trailCapacity,
+      predicted: (pg, c) => pg.robotCount * c.predictedSamples * POSE_STRIDE,
+      predictedTimes: (pg, c) => c.predictedSamples,
+      predictedMinPair: (pg, c) => c.predictedSamples,
+    };
+    for (const [name, length] of Object.entries(lengths)) {
+      const pointer = `${name}Pointer`;
+      const typed = name === 'trailLengths' ? 'u32' : 'f64';
+      Object.defineProperty(cache, name === 'trailLengths' ? 'trailLens' : name, {
+        enumerable: true,
+        get: () => this.views[typed](name, this.pg[pointer], length(this.pg, cache)),
+      });
+    }
+    return cache;
   }
 
   /** The trail rings as a view into wasm memory (no copy); valid until the next wasm call. */
   trailsView() {
-    const length = this.cache.scenario.robots.length * this.limits.trailCapacity * POSE_STRIDE;
-    return new Float64Array(this.memory.buffer, this.pg.trailsPointer, length);
+    return this.cache.trails;
   }
 
   fixSelection() {
@@ -519,10 +619,24 @@ export class DvfPlayground extends HTMLElement {
       const wall = this.lastFrameMs == null ? 0 : Math.min(MAX_FRAME_WALL_S, (nowMs - this.lastFrameMs) / 1000);
       this.lastFrameMs = nowMs;
       this.stepCarry = (this.stepCarry ?? 0) + (wall * this.speed) / this.pg.dt;
-      const n = Math.floor(this.stepCarry);
+      let n = Math.floor(this.stepCarry);
       this.stepCarry -= n;
+      // The step budget: what does not fit is dropped, and the clock shows the slower rate.
+      const fit = this.stepMs == null ? 1 : Math.max(1, Math.floor(STEP_BUDGET_MS / this.stepMs));
+      if (n > fit) {
+        this.rate = (fit / n) * this.speed;
+        n = fit;
+        this.stepCarry = 0;
+      } else if (n > 0) {
+        this.rate = this.speed;
+      }
       if (n > 0) {
-        this.pg.step(n);
+        const t0 = performance.now();
+        const taken = this.pg.step(n);
+        if (taken > 0) {
+          const per = (performance.now() - t0) / taken;
+          this.stepMs = this.stepMs == null ? per : 0.8 * this.stepMs + 0.2 * per;
+        }
         this.refreshCache(false);
       }
       if (this.pg.finished) {
@@ -533,8 +647,11 @@ export class DvfPlayground extends HTMLElement {
     this.draw();
     if (this.stats.frames === 0) this.stats.firstFrameMs = performance.now();
     this.stats.frames += 1;
-    this.stats.frameWorkMs = performance.now() - workStart;
-    this.stats.maxFrameWorkMs = Math.max(this.stats.maxFrameWorkMs, this.stats.frameWorkMs);
+    const st = this.stats;
+    st.frameWorkMs = performance.now() - workStart;
+    st.maxFrameWorkMs = Math.max(st.maxFrameWorkMs, st.frameWorkMs);
+    st.work[st.workCount % WORK_SAMPLES] = st.frameWorkMs;
+    st.workCount += 1;
     if (this.playing) this.requestDraw();
   }
 
@@ -542,19 +659,33 @@ export class DvfPlayground extends HTMLElement {
     const { ctx, width, height } = fitCanvas(this.canvas);
     const view = this.view();
     const c = this.cache;
+    const field = this.fieldMode === 'arrows' ? this.sampleField(view, width, height) : null;
+    const curves = this.fieldMode === 'curves' ? this.integralCurves() : null;
+    // After every other call into wasm this frame (a view is valid until the memory grows):
+    // the spread reads every array of the cache as a view once.
     const scene = {
       ...c,
       selection: this.selection,
       focusRobot: this.focusRobot,
       showSensing: this.showSensing,
-      field: this.fieldMode === 'arrows' ? this.sampleField(view, width, height) : null,
-      curves: this.fieldMode === 'curves' ? this.integralCurves() : null,
+      field: field ? this.views.f64('field', this.pg.fieldPointer, field) : null,
+      curves,
       curvePoints: this.limits.curvePoints,
+      trailLayer: this.trailLayer,
+      glyphLayer: this.glyphLayer,
+      dpr: ctx.canvas.width / width,
     };
-    // Last, after every other call into wasm this frame: a view is valid until the next one.
-    scene.trails = this.trailsView();
+    this.trailLayer.update(view, scene, scene.dpr, this.generation, performance.now());
+    if (this.trailLayer.stale && !this.settleTimer) {
+      // The trails are shown stretched while the view moves: draw them anew once it rests.
+      this.settleTimer = setTimeout(() => {
+        this.settleTimer = null;
+        this.requestDraw();
+      }, TRAIL_SETTLE_MS);
+    }
     drawScene(ctx, view, scene);
-    this.$('clock').textContent = `t = ${c.time.toFixed(2)} s / ${c.duration.toFixed(2)} s${this.playing ? '' : ' (paused)'}`;
+    const slowed = this.playing && this.rate < this.speed * 0.995 ? ` (${this.rate.toPrecision(2)}× real time: the crowd steps slower than the clock)` : '';
+    this.$('clock').textContent = `t = ${c.time.toFixed(2)} s / ${c.duration.toFixed(2)} s${this.playing ? slowed : ' (paused)'}`;
     this.$('hint').textContent = this.hintText();
     // Free text from the scenario: textContent only, never HTML.
     this.$('title').textContent = c.scenario.name;
@@ -577,7 +708,8 @@ export class DvfPlayground extends HTMLElement {
     const hx = width / nx / 2;
     const hy = height / ny / 2;
     try {
-      return this.pg.sampleField(this.focusRobot, view.wx(hx), view.wy(height - hy), view.wx(width - hx), view.wy(hy), nx, ny);
+      // The values stay in wasm memory: draw() reads them through a view.
+      return this.pg.refreshField(this.focusRobot, view.wx(hx), view.wy(height - hy), view.wx(width - hx), view.wy(hy), nx, ny);
     } catch (e) {
       this.showMessage(e.message ?? String(e));
       return null;
@@ -666,7 +798,11 @@ export class DvfPlayground extends HTMLElement {
     }
     speed.value = String(DEFAULT_SPEED);
     speed.addEventListener('change', () => { this.speed = Number(speed.value); });
-    $('preset').addEventListener('change', () => this.loadPreset($('preset').value, { edit: true }));
+    $('preset').addEventListener('change', () => {
+      if ($('preset').value === 'crowd') this.loadCrowd();
+      else this.loadPreset($('preset').value, { edit: true });
+    });
+    $('crowd-n').addEventListener('change', () => this.loadCrowd());
     $('play').addEventListener('click', () => (this.playing ? this.pause() : this.play()));
     $('step').addEventListener('click', () => this.stepTime());
     $('reset').addEventListener('click', () => this.reset());
@@ -1091,6 +1227,34 @@ export class DvfPlayground extends HTMLElement {
       this.selection = null;
       this.focusRobot = 0;
     }
+  }
+}
+
+/**
+ * Typed-array views into wasm memory by name, remade only when the memory grew (its buffer
+ * changed), the array moved or its length changed: no allocation in a steady frame.
+ */
+class WasmViews {
+  constructor(memory) {
+    this.memory = memory;
+    this.byName = new Map();
+  }
+
+  f64(name, pointer, length) {
+    return this.view(name, Float64Array, pointer, length);
+  }
+
+  u32(name, pointer, length) {
+    return this.view(name, Uint32Array, pointer, length);
+  }
+
+  view(name, Type, pointer, length) {
+    const buffer = this.memory.buffer;
+    const v = this.byName.get(name);
+    if (v && v.buffer === buffer && v.byteOffset === pointer && v.length === length) return v;
+    const made = new Type(buffer, pointer, length);
+    this.byName.set(name, made);
+    return made;
   }
 }
 

@@ -2,7 +2,7 @@
 // address's fragment (#s=<scenario JSON>, or #<preset name>) so that a copied link reopens it.
 
 import './dvf-playground.js';
-import { fragmentFor, parseFragment } from './io.js';
+import { MAX_SCENARIO_BYTES, fragmentFor, parseFragment } from './io.js';
 
 const playground = document.getElementById('playground');
 /** The fragment this page last wrote, so that its own hashchange is not read back. */
@@ -25,8 +25,12 @@ async function main() {
   await playground.loaded;
   openFragment(location.hash);
   playground.addEventListener('change', () => {
-    written = fragmentFor(playground.scenario());
-    history.replaceState(null, '', written);
+    // A preset by its name (a crowd of 10,000 is 600 KB of JSON); an edited scene as JSON, or
+    // no fragment at all when that is longer than a link may be (Scenario JSON saves it).
+    const preset = playground.presetName();
+    const fragment = preset ? `#${encodeURIComponent(preset)}` : fragmentFor(playground.scenario());
+    written = fragment.length <= MAX_SCENARIO_BYTES ? fragment : '';
+    history.replaceState(null, '', written || `${location.pathname}${location.search}`);
   });
   window.addEventListener('hashchange', () => {
     if (location.hash !== written) openFragment(location.hash);

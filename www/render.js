@@ -1,6 +1,8 @@
 // Drawing: the world-to-screen view (equal aspect, y up, pan and zoom) and the live scene on a
 // 2-D canvas. All sizes are CSS pixels; the backing store is scaled by devicePixelRatio.
-// Knows nothing of the DOM beyond the canvas it is given.
+// Knows nothing of the DOM beyond the canvas it is given (and the canvases of its layers).
+
+import { GlyphLayer } from './glyphs.js';
 
 /** One colour per robot, cycled (Tableau 10: distinct, and legible on white). */
 export const ROBOT_COLOURS = [
@@ -47,6 +49,29 @@ const START_ALPHA = 0.45;
 const GOAL_DASH_PX = [3, 2];
 const INFLUENCE_DASH_PX = [6, 4];
 const SAFE_DASH_PX = [2, 3];
+/**
+ * Above this many robots the scene is drawn as a crowd: one path per colour for each kind of
+ * glyph (ten fills or strokes in all, whatever the count), glyphs shrunk with the zoom, start
+ * markers and dashes left out, and the sensing circle and virtual obstacle of the inspected
+ * robot only.
+ */
+export const CROWD_STYLE_ABOVE = 100;
+/** A crowd's glyphs are about 3·r_ij long on screen, within these bounds (CSS px). */
+const CROWD_GLYPH_MIN_PX = 4;
+/** A crowd's safe discs are drawn only when at least this wide (radius, CSS px) and at most
+ * this many robots are on screen (each disc is a path call: see glyphs.js). */
+const CROWD_DISC_MIN_PX = 3;
+const CROWD_DISC_MAX = 1500;
+const CROWD_TRAIL_WIDTH_PX = 1.5;
+/** A full redraw of the trails skips points closer than this to the last one drawn (CSS px). */
+const TRAIL_DECIMATE_PX = 1;
+/**
+ * While the view moves, trails that took longer than TRAIL_DEFER_MS to draw are shown
+ * stretched from their last drawing, and drawn again once the view has been still for
+ * TRAIL_SETTLE_MS.
+ */
+const TRAIL_DEFER_MS = 12;
+export const TRAIL_SETTLE_MS = 150;
 /** Values per pose / per status / per field sample / per obstacle in the wasm arrays. */
 export const POSE_STRIDE = 3;
 export const STATUS_STRIDE = 6;
@@ -123,7 +148,20 @@ export function drawScene(ctx, view, scene) {
   if (scene.field) drawField(ctx, view, scene.field, s.obstacles);
   const n = s.robots.length;
   for (let i = 0; i < n; i++) drawPredicted(ctx, view, scene, i);
-  for (let i = 0; i < n; i++) drawTrail(ctx, view, scene, i);
+  scene.trailLayer?.composite(ctx, view);
+  if (n > CROWD_STYLE_ABOVE) {
+    drawCrowd(ctx, view, scene);
+  } else {
+    drawRobots(ctx, view, scene);
+  }
+  drawSelection(ctx, view, scene);
+  drawLabels(ctx, view);
+}
+
+/** Each robot with its own glyphs: goal, start, safe disc, sensing circle, body. */
+function drawRobots(ctx, view, scene) {
+  const s = scene.scenario;
+  const n = s.robots.length;
   const atStart = scene.time === 0;
   for (let i = 0; i < n; i++) {
     const colour = robotColour(i);
@@ -146,8 +184,217 @@ export function drawScene(ctx, view, scene) {
   for (let i = 0; i < n; i++) {
     drawRobot(ctx, view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), p[i * POSE_STRIDE + 2], robotColour(i));
   }
-  drawSelection(ctx, view, scene);
-  drawLabels(ctx, view);
+}
+
+/** Length of a crowd's glyphs in device pixels (a whole number, so sprites can be reused). */
+function crowdGlyphPx(view, safeRadius, dpr) {
+  const css = Math.min(ROBOT_LENGTH_PX, Math.max(CROWD_GLYPH_MIN_PX, 3 * safeRadius * view.scale));
+  return Math.max(3, Math.round(css * dpr));
+}
+
+/**
+ * A crowd: goals and bodies stamped as pre-rasterised sprites into scene.glyphLayer (see
+ * glyphs.js; paths cost too much per call for thousands), safe discs as paths when they are
+ * wide enough and few enough to matter. Glyphs off screen are skipped. The inspected robot
+ * keeps its sensing circle and virtual obstacle.
+ */
+function drawCrowd(ctx, view, scene) {
+  const s = scene.scenario;
+  const n = s.robots.length;
+  const p = scene.poses;
+  const k = ROBOT_COLOURS.length;
+  const dpr = scene.dpr;
+  const pad = ROBOT_LENGTH_PX;
+  const onScreen = (x, y) => x > -pad && y > -pad && x < view.width + pad && y < view.height + pad;
+  const rs = s.params.safe_radius * view.scale;
+  if (!s.independent && rs >= CROWD_DISC_MIN_PX) {
+    let shown = 0;
+    for (let i = 0; i < n && shown <= CROWD_DISC_MAX; i++) {
+      if (onScreen(view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]))) shown += 1;
+    }
+    if (shown <= CROWD_DISC_MAX) {
+      ctx.globalAlpha = 0.55;
+      ctx.lineWidth = 1;
+      for (let c = 0; c < k; c++) {
+        ctx.beginPath();
+        for (let i = c; i < n; i += k) {
+          const x = view.sx(p[i * POSE_STRIDE]);
+          const y = view.sy(p[i * POSE_STRIDE + 1]);
+          if (!onScreen(x, y)) continue;
+          ctx.moveTo(x + rs, y);
+          ctx.arc(x, y, rs, 0, 2 * Math.PI);
+        }
+        ctx.strokeStyle = ROBOT_COLOURS[c];
+        ctx.stroke();
+      }
+      ctx.globalAlpha = 1;
+    }
+  }
+  const layer = scene.glyphLayer;
+  layer.begin(ctx.canvas.width, ctx.canvas.height);
+  const px = crowdGlyphPx(view, s.params.safe_radius, dpr);
+  // The glyph spans 2/3 of its length either side of its centre, plus the stroke.
+  const side = Math.ceil((4 / 3) * px) + 3;
+  const scale = px / dpr / ROBOT_LENGTH_PX;
+  const goals = layer.sprites(`goal|${px}|${dpr}`, side, ROBOT_COLOURS, (g, c, theta, colour) => {
+    g.setTransform(dpr, 0, 0, dpr, 0, 0);
+    g.beginPath();
+    addTriangle(g, c / dpr, c / dpr, theta, scale * MARKER_SCALE);
+    g.globalAlpha = 0.55;
+    g.lineWidth = 1;
+    g.strokeStyle = colour;
+    g.stroke();
+  });
+  const outline = px >= 10 * dpr;
+  const bodies = layer.sprites(`body|${px}|${dpr}`, side, ROBOT_COLOURS, (g, c, theta, colour) => {
+    g.setTransform(dpr, 0, 0, dpr, 0, 0);
+    g.beginPath();
+    addTriangle(g, c / dpr, c / dpr, theta, scale);
+    g.fillStyle = colour;
+    g.fill();
+    if (outline) {
+      g.lineWidth = 0.75;
+      g.strokeStyle = '#1f2937';
+      g.stroke();
+    }
+  });
+  for (let i = 0; i < n; i++) {
+    const g = s.robots[i].goal;
+    const x = view.sx(g[0]);
+    const y = view.sy(g[1]);
+    if (onScreen(x, y)) layer.stamp(GlyphLayer.pick(goals, i % k, g[2]), x * dpr, y * dpr);
+  }
+  for (let i = 0; i < n; i++) {
+    const x = view.sx(p[i * POSE_STRIDE]);
+    const y = view.sy(p[i * POSE_STRIDE + 1]);
+    if (onScreen(x, y)) layer.stamp(GlyphLayer.pick(bodies, i % k, p[i * POSE_STRIDE + 2]), x * dpr, y * dpr);
+  }
+  layer.end(ctx, view.width, view.height);
+  const f = scene.focusRobot;
+  if (f != null && f < n) {
+    const x = view.sx(p[f * POSE_STRIDE]);
+    const y = view.sy(p[f * POSE_STRIDE + 1]);
+    if (scene.showSensing) drawSenseCircle(ctx, x, y, s.params.sense_radius * view.scale);
+    const vx = scene.status[f * STATUS_STRIDE + 4];
+    const vy = scene.status[f * STATUS_STRIDE + 5];
+    if (!s.independent && !Number.isNaN(vx)) {
+      drawVirtualObstacle(ctx, view.sx(vx), view.sy(vy), s.params.avoid_radius * view.scale);
+    }
+  }
+}
+
+/**
+ * The trails, kept on a canvas of their own that is brought up to date each frame: while the
+ * view stays put only the samples recorded since the last frame are drawn (a few segments
+ * per robot), so trails cost O(robots) per frame however long they are. A new view, size,
+ * scene or ring layout redraws them all, one path per colour, points closer than
+ * TRAIL_DECIMATE_PX to the previous one skipped.
+ *
+ * Sample `g` (counting from the last reset, `scene.recorded` in all) lies in ring slot
+ * `g % cap`; robot `i` holds its last `trailLens[i]` samples.
+ */
+export class TrailLayer {
+  constructor() {
+    this.canvas = document.createElement('canvas');
+    this.state = { width: 0, height: 0, scale: 0, ox: 0, oy: 0, generation: -1, robots: -1, cap: -1, drawn: 0 };
+    /** The camera of the last frame and when it last changed (ms). */
+    this.seen = { scale: 0, ox: 0, oy: 0, at: 0 };
+    /** How long the last full drawing took (ms). */
+    this.costMs = 0;
+    /** Whether the layer shows an older view (a redraw is due once the view is still). */
+    this.stale = false;
+  }
+
+  /**
+   * Updates the layer for `view` (a makeView) and `scene` at devicePixelRatio `dpr`; `nowMs`
+   * is the frame's time.
+   */
+  update(view, scene, dpr, generation, nowMs) {
+    const bw = Math.max(1, Math.round(view.width * dpr));
+    const bh = Math.max(1, Math.round(view.height * dpr));
+    const n = scene.scenario.robots.length;
+    const cap = scene.trailCapacity;
+    const st = this.state;
+    const recorded = scene.recorded;
+    const ox = view.sx(0);
+    const oy = view.sy(0);
+    const seen = this.seen;
+    if (seen.scale !== view.scale || seen.ox !== ox || seen.oy !== oy) Object.assign(seen, { scale: view.scale, ox, oy, at: nowMs });
+    const sameScene = st.width === bw && st.height === bh && st.generation === generation && st.robots === n && st.cap === cap
+      && recorded >= st.drawn && recorded - st.drawn < cap;
+    const sameCamera = st.scale === view.scale && st.ox === ox && st.oy === oy;
+    const ctx = this.canvas.getContext('2d');
+    const crowd = n > CROWD_STYLE_ABOVE;
+    this.stale = false;
+    if (sameScene && !sameCamera && this.costMs > TRAIL_DEFER_MS && nowMs - seen.at < TRAIL_SETTLE_MS) {
+      this.stale = true;
+      return;
+    }
+    if (!sameScene || !sameCamera) {
+      const t0 = performance.now();
+      if (this.canvas.width !== bw) this.canvas.width = bw;
+      if (this.canvas.height !== bh) this.canvas.height = bh;
+      ctx.setTransform(1, 0, 0, 1, 0, 0);
+      ctx.clearRect(0, 0, bw, bh);
+      ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+      this.draw(ctx, view, scene, 0, crowd);
+      Object.assign(st, { width: bw, height: bh, scale: view.scale, ox, oy, generation, robots: n, cap });
+      this.costMs = performance.now() - t0;
+    } else if (recorded > st.drawn) {
+      ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+      this.draw(ctx, view, scene, st.drawn - 1, crowd);
+    }
+    st.drawn = recorded;
+  }
+
+  /** Puts the layer on `ctx`, stretched from the view it was drawn in to `view`. */
+  composite(ctx, view) {
+    const st = this.state;
+    if (st.scale === 0) return;
+    const r = view.scale / st.scale;
+    const w = view.width * r;
+    const h = view.height * r;
+    ctx.drawImage(this.canvas, view.sx(0) - st.ox * r, view.sy(0) - st.oy * r, w, h);
+  }
+
+  /** Draws every robot's trail from global sample `from` on (the first kept one at least). */
+  draw(ctx, view, scene, from, crowd) {
+    const n = scene.scenario.robots.length;
+    const cap = scene.trailCapacity;
+    const t = scene.trails;
+    const lens = scene.trailLens;
+    const end = scene.recorded;
+    const k = ROBOT_COLOURS.length;
+    const full = from <= 0;
+    ctx.lineWidth = crowd ? CROWD_TRAIL_WIDTH_PX : TRAIL_WIDTH_PX;
+    ctx.lineJoin = 'round';
+    ctx.lineCap = 'round';
+    for (let c = 0; c < k; c++) {
+      ctx.beginPath();
+      for (let i = c; i < n; i += k) {
+        const first = Math.max(from, end - lens[i]);
+        if (end - first < 2) continue;
+        const base = i * cap * POSE_STRIDE;
+        let o = base + (first % cap) * POSE_STRIDE;
+        let lx = view.sx(t[o]);
+        let ly = view.sy(t[o + 1]);
+        ctx.moveTo(lx, ly);
+        for (let g = first + 1; g < end; g++) {
+          o = base + (g % cap) * POSE_STRIDE;
+          const x = view.sx(t[o]);
+          const y = view.sy(t[o + 1]);
+          // Skipping only on a full redraw, and never the newest point, where the next
+          // frame's segments start.
+          if (full && g < end - 1 && Math.abs(x - lx) < TRAIL_DECIMATE_PX && Math.abs(y - ly) < TRAIL_DECIMATE_PX) continue;
+          ctx.lineTo(x, y);
+          lx = x;
+          ly = y;
+        }
+      }
+      ctx.strokeStyle = ROBOT_COLOURS[c];
+      ctx.stroke();
+    }
+  }
 }
 
 /** Grid step (m): 1, 2 or 5 × 10^k, the nearest to GRID_SPACING_PX on screen. */
@@ -330,27 +577,6 @@ function drawPredicted(ctx, view, scene, i) {
   ctx.globalAlpha = 1;
 }
 
-/** Robot `i`'s trail: the ring of past poses, oldest first, solid. */
-function drawTrail(ctx, view, scene, i) {
-  const len = scene.trailLens[i];
-  if (len < 2) return;
-  const cap = scene.trailCapacity;
-  const t = scene.trails;
-  const base = i * cap * POSE_STRIDE;
-  let slot = (scene.trailHead - len + cap) % cap;
-  ctx.beginPath();
-  ctx.moveTo(view.sx(t[base + slot * POSE_STRIDE]), view.sy(t[base + slot * POSE_STRIDE + 1]));
-  for (let k = 1; k < len; k++) {
-    slot = (slot + 1) % cap;
-    ctx.lineTo(view.sx(t[base + slot * POSE_STRIDE]), view.sy(t[base + slot * POSE_STRIDE + 1]));
-  }
-  ctx.lineWidth = TRAIL_WIDTH_PX;
-  ctx.lineJoin = 'round';
-  ctx.lineCap = 'round';
-  ctx.strokeStyle = robotColour(i);
-  ctx.stroke();
-}
-
 /** Virtual obstacles (robots avoiding each other): a red cross and the ring R_c. */
 function drawVirtualObstacles(ctx, view, scene) {
   const st = scene.status;
@@ -447,16 +673,23 @@ export function drawHandle(ctx, x, y) {
 
 /** A triangle pointing along world heading `theta` (rad, CCW) at screen point (x, y). */
 function trianglePath(ctx, x, y, theta, size = 1) {
+  ctx.beginPath();
+  addTriangle(ctx, x, y, theta, size);
+}
+
+/** Adds the triangle of trianglePath to the current path (no allocation: crowds add many). */
+function addTriangle(ctx, x, y, theta, size) {
   const l = ROBOT_LENGTH_PX * size;
   const w = ROBOT_WIDTH_PX * size;
   // Screen y points down, so a CCW world angle is a CW screen angle.
   const c = Math.cos(theta);
   const s = -Math.sin(theta);
-  const pt = (u, v) => [x + u * c - v * s, y + u * s + v * c];
-  ctx.beginPath();
-  ctx.moveTo(...pt((2 / 3) * l, 0));
-  ctx.lineTo(...pt(-l / 3, w / 2));
-  ctx.lineTo(...pt(-l / 3, -w / 2));
+  const a = (2 / 3) * l;
+  const b = -l / 3;
+  const h = w / 2;
+  ctx.moveTo(x + a * c, y + a * s);
+  ctx.lineTo(x + b * c - h * s, y + b * s + h * c);
+  ctx.lineTo(x + b * c + h * s, y + b * s - h * c);
   ctx.closePath();
 }
 

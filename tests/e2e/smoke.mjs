@@ -263,7 +263,43 @@ await run(async ({ base, newPage }) => {
     await page.screenshot({ path: join(RESULTS, `preset-${preset}.png`) });
     const s = await canvasStats(page);
     check(s.coloured >= MIN_COLOURED_PIXELS && (await part(page, 'message').isHidden()), `preset ${preset} draws without a message (${s.coloured} coloured pixels)`);
+    check(await part(page, 'crowd-box').isHidden(), `preset ${preset}: the crowd's N box is hidden`);
   }
+
+  // --- The crowd: N in the page, the link names it, a bad N is refused, an edit unnames it. ---
+  await part(page, 'preset').selectOption('crowd');
+  await page.waitForFunction((sel) => document.querySelector(sel).presetName() === 'crowd-1000', PG);
+  check(await part(page, 'crowd-box').isVisible(), 'choosing the crowd shows its N box (1,000 robots by default)');
+  await part(page, 'crowd-n').fill('2500');
+  await part(page, 'crowd-n').dispatchEvent('change');
+  await frames(page);
+  const crowd = await page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    return { robots: el.scenario().robots.length, hash: location.hash, predicted: el.cache.predictedSamples };
+  }, PG);
+  check(crowd.robots === 2500 && crowd.hash === '#crowd-2500' && crowd.predicted === 0,
+    `N = 2500 loads a crowd of ${crowd.robots}, the address is ${crowd.hash}, no predicted paths (${crowd.predicted} samples)`);
+  await page.screenshot({ path: join(RESULTS, 'main-crowd-2500.png') });
+  const crowdPicture = await canvasStats(page);
+  check(crowdPicture.coloured >= MIN_COLOURED_PIXELS, `the crowd draws (${crowdPicture.coloured} coloured pixels)`);
+  for (const bad of ['0', '10001', '2.5']) {
+    await part(page, 'crowd-n').fill(bad);
+    await part(page, 'crowd-n').dispatchEvent('change');
+    const msg = await part(page, 'message').textContent();
+    const kept = await page.evaluate((sel) => document.querySelector(sel).scenario().robots.length, PG);
+    check(msg.includes('N must be a whole number from 1 to 10000') && kept === 2500,
+      `N = ${bad} is refused with a message and the crowd of 2500 stays`);
+  }
+  await part(page, 'add-robot').click();
+  await frames(page);
+  const edited = await page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    return { name: el.presetName(), robots: el.scenario().robots.length, hash: location.hash.slice(0, 3) };
+  }, PG);
+  check(edited.name === null && edited.robots === 2501 && await part(page, 'preset').inputValue() === '' && edited.hash === '',
+    `adding a robot makes the crowd an edited scene (menu "(edited or imported)", ${edited.robots} robots, no fragment: the JSON is longer than a link may be)`);
+  await part(page, 'undo').click();
+  await part(page, 'preset').selectOption(SECOND_PRESET);
 
   // --- Parameters: a bad value shows the core's message and keeps the old one. ---
   const kv = page.locator(`${PG} input[name="k_v"]`);
@@ -298,7 +334,7 @@ await run(async ({ base, newPage }) => {
   const trail = await page.evaluate((sel) => {
     const el = document.querySelector(sel);
     const view = el.trailsView(); // the ring, read in place in wasm memory
-    const cap = el.limits.trailCapacity;
+    const cap = el.cache.trailCapacity;
     const newest = (el.pg.trailHead - 1 + cap) % cap;
     return { len: el.pg.trailLength(0), same: view[newest * 3] === el.cache.poses[0] && view[newest * 3 + 1] === el.cache.poses[1] };
   }, PG);
