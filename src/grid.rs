@@ -43,11 +43,13 @@ pub struct Neighbours {
     bucket_of: Vec<u32>,
     start: Vec<u32>,
     order: Vec<u32>,
-    // The lists: robot `i`'s neighbours are `list[first[i]..first[i + 1]]`; `hits` holds the
-    // same rows in bucket order, `cursor` is the fill position of each row.
+    // The lists: robot `i`'s neighbours are `list[first[i]..first[i + 1]]`. `hits` holds each
+    // robot's neighbours of higher index in bucket order, robot `i`'s from `upper[i]`;
+    // `cursor` is a fill position per row.
     first: Vec<u32>,
     list: Vec<u32>,
     hits: Vec<u32>,
+    upper: Vec<u32>,
     cursor: Vec<u32>,
 }
 
@@ -107,13 +109,18 @@ impl Neighbours {
             *slot += 1;
         }
 
-        // The hits of each robot, in bucket order: the robots within reach among the 3 × 3
-        // cells around it (a robot within reach is at most one cell away along each axis).
+        // The hits of each robot, in bucket order: the robots of higher index within reach
+        // among the 3 × 3 cells around it (a robot within reach is at most one cell away along
+        // each axis). "Within reach" is symmetric (the squared distance of a pair is the same
+        // bits either way round), so each pair is tested once.
         let reach2 = reach * reach;
-        self.first.clear();
-        self.hits.clear();
+        self.upper.clear();
+        // `hits[..count]` are the hits so far; the rest is room (kept from build to build), so
+        // that a candidate is written before its test and kept by advancing `count`: no
+        // branch to mispredict.
+        let mut count = 0usize;
         for i in 0..n {
-            self.first.push(self.hits.len() as u32);
+            self.upper.push(count as u32);
             let p = positions(i);
             let (cx, cy) = coords(p);
             // Bucket intervals [lo, hi] of the three rows, split where they wrap.
@@ -155,27 +162,55 @@ impl Neighbours {
             runs[k] = (self.start[cur.0], self.start[cur.1 + 1]);
             k += 1;
             for &(from, to) in &runs[..k] {
-                for &j in &self.order[from as usize..to as usize] {
-                    if j as usize != i && positions(j as usize).distance_squared(p) <= reach2 {
-                        self.hits.push(j);
-                    }
+                let candidates = &self.order[from as usize..to as usize];
+                if self.hits.len() < count + candidates.len() {
+                    self.hits.resize(2 * (count + candidates.len()), 0);
+                }
+                for &j in candidates {
+                    self.hits[count] = j;
+                    let hit =
+                        (j as usize > i) & (positions(j as usize).distance_squared(p) <= reach2);
+                    count += usize::from(hit);
                 }
             }
         }
-        self.first.push(self.hits.len() as u32);
+        self.upper.push(count as u32);
 
-        // Ascending order without a sort: "within reach" is symmetric (the squared distance
-        // of a pair is the same bits either way round), so robot `j`'s row holds exactly the
-        // robots `i` whose rows hold `j`. Scattering each `i` into the rows of its hits, for
-        // `i` ascending, fills every row in ascending order; the rows keep their lengths.
+        // Ascending rows without a sort. Row `i` is its neighbours of lower index, then those
+        // of higher index. (1) Lengths: robot `j`'s lower neighbours are the `i` whose hits
+        // hold `j`. (2) Scattering each `i` into the rows of its hits, for `i` ascending, fills
+        // every lower part in ascending order. (3) Scattering each `i` into the rows of its
+        // lower neighbours, for `i` ascending, fills every upper part in ascending order.
+        self.cursor.clear();
+        self.cursor.resize(n, 0);
+        for &j in &self.hits[..count] {
+            self.cursor[j as usize] += 1;
+        }
+        self.first.clear();
+        let mut total = 0u32;
+        for i in 0..n {
+            self.first.push(total);
+            total += self.cursor[i] + (self.upper[i + 1] - self.upper[i]);
+        }
+        self.first.push(total);
         self.list.clear();
-        self.list.resize(self.hits.len(), 0);
+        self.list.resize(total as usize, 0);
         self.cursor.clear();
         self.cursor.extend_from_slice(&self.first[..n]);
         for i in 0..n {
-            let (a, b) = (self.first[i] as usize, self.first[i + 1] as usize);
+            let (a, b) = (self.upper[i] as usize, self.upper[i + 1] as usize);
             for &j in &self.hits[a..b] {
                 let slot = &mut self.cursor[j as usize];
+                self.list[*slot as usize] = i as u32;
+                *slot += 1;
+            }
+        }
+        // `cursor[i]` is now where row `i`'s upper part starts, past its lower part.
+        for i in 0..n {
+            let lower_end = self.first[i + 1] - (self.upper[i + 1] - self.upper[i]);
+            for k in self.first[i]..lower_end {
+                let j = self.list[k as usize] as usize;
+                let slot = &mut self.cursor[j];
                 self.list[*slot as usize] = i as u32;
                 *slot += 1;
             }
@@ -192,8 +227,11 @@ impl Neighbours {
     /// that rebuilds allocate nothing while the total stays below that.
     pub fn reserve(&mut self, factor: f64) {
         let want = (self.list.len() as f64 * factor) as usize;
-        for v in [&mut self.hits, &mut self.list] {
-            v.reserve(want.saturating_sub(v.len()));
+        self.list.reserve(want.saturating_sub(self.list.len()));
+        // The hits hold half the pairs, plus room for one range of candidates (at most all).
+        let room = want / 2 + self.order.len() + 1;
+        if self.hits.len() < room {
+            self.hits.resize(room, 0);
         }
     }
 
@@ -204,6 +242,171 @@ impl Neighbours {
             (Some(&a), Some(&b)) => &self.list[a as usize..b as usize],
             _ => &[],
         }
+    }
+}
+
+/// An obstacle whose grown disc would cover more cells than this is listed for every point
+/// instead ([`ObstacleCells`]): a few huge obstacles cost a check per robot, not memory.
+const MAX_OBSTACLE_CELLS: i64 = 1_024;
+
+/// The obstacles near any point, for the sensing of eq. `eq_nonholo_controller_co_avoid` and
+/// the obstacle metrics at O(1) per robot: square cells as wide as a reach, each listing (in
+/// ascending index) the obstacles whose disc grown by the reach meets the cell.
+///
+/// [`ObstacleCells::near`]`(p)` holds every obstacle whose surface is within the reach of
+/// `p` (and some farther ones, which the caller's own distance test drops), ascending. Built
+/// once per scenario: obstacles do not move. As in [`Neighbours`], cells are hashed into a
+/// table of counting-sorted lists, so the grid is unbounded and its memory is O(cells covered).
+#[derive(Clone, Debug, Default)]
+pub struct ObstacleCells {
+    cell: f64,
+    mask: u64,
+    // Bucket `b` lists `items[start[b]..start[b + 1]]`, ascending.
+    start: Vec<u32>,
+    items: Vec<u32>,
+    // Obstacles listed for every point: too large for cells, or all of them (the reference).
+    everywhere: Vec<u32>,
+}
+
+impl ObstacleCells {
+    /// The cells for `obstacles` and a `reach` (scenario units).
+    #[must_use]
+    pub fn build(obstacles: &[crate::Obstacle], reach: f64) -> Self {
+        let far = obstacles
+            .iter()
+            .map(|o| o.center.abs().max_element() + o.radius)
+            .filter(|v| v.is_finite())
+            .fold(0.0_f64, f64::max);
+        let cell = (reach * (1.0 + CELL_MARGIN))
+            .max(far / MAX_CELL_COORDINATE)
+            .max(f64::MIN_POSITIVE);
+        // The cells met by obstacle `k`'s disc grown by the reach (its bounding box, padded
+        // against round-off in the distance a caller computes), or None for "everywhere".
+        let span = |o: &crate::Obstacle| -> Option<[i64; 4]> {
+            let grow = (o.radius + reach) * (1.0 + CELL_MARGIN) + far * 1e-12;
+            let lo = (o.center - grow) / cell;
+            let hi = (o.center + grow) / cell;
+            let b = [floor(lo.x), floor(lo.y), floor(hi.x), floor(hi.y)];
+            let count = (b[2] - b[0] + 1).saturating_mul(b[3] - b[1] + 1);
+            (grow.is_finite() && (1..=MAX_OBSTACLE_CELLS).contains(&count)).then_some(b)
+        };
+        let spans: Vec<Option<[i64; 4]>> = obstacles.iter().map(span).collect();
+        let entries: i64 = spans
+            .iter()
+            .flatten()
+            .map(|b| (b[2] - b[0] + 1) * (b[3] - b[1] + 1))
+            .sum();
+        let buckets = (2 * entries.max(1) as usize).next_power_of_two();
+        let mask = buckets as u64 - 1;
+        let mut out = Self {
+            cell,
+            mask,
+            start: vec![0; buckets + 1],
+            items: Vec::new(),
+            everywhere: Vec::new(),
+        };
+        // Counting sort, obstacles in ascending index; an obstacle once per bucket even where
+        // two of its cells share one.
+        let mut last = vec![u32::MAX; buckets];
+        for pass in 0..2 {
+            if pass == 1 {
+                for b in 0..buckets {
+                    out.start[b + 1] += out.start[b];
+                }
+                out.items = vec![0; out.start[buckets] as usize];
+                last.fill(u32::MAX);
+            }
+            let mut fill = out.start.clone();
+            for (k, b) in spans.iter().enumerate() {
+                let Some([x0, y0, x1, y1]) = *b else {
+                    if pass == 0 {
+                        out.everywhere.push(k as u32);
+                    }
+                    continue;
+                };
+                for cy in y0..=y1 {
+                    for cx in x0..=x1 {
+                        let bucket = out.bucket(cx, cy);
+                        if last[bucket] == k as u32 {
+                            continue;
+                        }
+                        last[bucket] = k as u32;
+                        if pass == 0 {
+                            out.start[bucket + 1] += 1;
+                        } else {
+                            out.items[fill[bucket] as usize] = k as u32;
+                            fill[bucket] += 1;
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// Every one of `m` obstacles listed for every point: the reference that the cells are
+    /// tested against (and the same code path for [`crate::Neighbourhood::AllPairs`]).
+    #[must_use]
+    pub fn all(m: usize) -> Self {
+        Self {
+            cell: 1.0,
+            mask: 0,
+            start: vec![0, 0],
+            items: Vec::new(),
+            everywhere: (0..m as u32).collect(),
+        }
+    }
+
+    fn bucket(&self, cx: i64, cy: i64) -> usize {
+        ((cy as u64)
+            .wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            .wrapping_add(cx as u64)
+            & self.mask) as usize
+    }
+
+    /// The obstacles that may be within the reach of `p`, ascending.
+    #[must_use]
+    pub fn near(&self, p: DVec2) -> Candidates<'_> {
+        if self.items.is_empty() {
+            return Candidates {
+                cells: &[],
+                everywhere: &self.everywhere,
+            };
+        }
+        let b = self.bucket(floor(p.x / self.cell), floor(p.y / self.cell));
+        Candidates {
+            cells: &self.items[self.start[b] as usize..self.start[b + 1] as usize],
+            everywhere: &self.everywhere,
+        }
+    }
+}
+
+/// The obstacle indices of [`ObstacleCells::near`]: two ascending lists merged.
+#[derive(Clone, Debug)]
+pub struct Candidates<'a> {
+    cells: &'a [u32],
+    everywhere: &'a [u32],
+}
+
+impl Iterator for Candidates<'_> {
+    type Item = usize;
+
+    fn next(&mut self) -> Option<usize> {
+        let (a, b) = (self.cells.first(), self.everywhere.first());
+        let take_cells = match (a, b) {
+            (Some(x), Some(y)) => x < y,
+            (Some(_), None) => true,
+            (None, Some(_)) => false,
+            (None, None) => return None,
+        };
+        let list = if take_cells {
+            &mut self.cells
+        } else {
+            &mut self.everywhere
+        };
+        let (&k, rest) = list.split_first()?;
+        *list = rest;
+        Some(k as usize)
     }
 }
 
@@ -375,6 +578,58 @@ mod tests {
         assert!(min_pair_distance(&[DVec2::ONE], 1.0, &mut search).is_nan());
         assert!(min_pair_distance(&[DVec2::ONE, DVec2::NAN], 1.0, &mut search).is_nan());
         assert_eq!(closest_pair_below(&[DVec2::ONE, DVec2::ONE], 0.0), None);
+    }
+
+    /// The obstacle cells list, for any point, every obstacle whose surface is within the
+    /// reach, in ascending order, with no repeats; the same set as a scan, after the caller's
+    /// distance test.
+    #[test]
+    fn obstacle_cells_cover_the_reach() {
+        use crate::Obstacle;
+        let mut s = 0x1234_5678_9ABC_DEF1_u64;
+        let mut next = || {
+            s ^= s >> 12;
+            s ^= s << 25;
+            s ^= s >> 27;
+            (s.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for (m, side, reach, rmax) in [
+            (40, 200.0, 20.0, 8.0),
+            (200, 1_000.0, 5.0, 3.0),
+            (10, 100.0, 0.5, 60.0),
+            (30, 1e6, 20.0, 1e4),
+        ] {
+            let obstacles: Vec<Obstacle> = (0..m)
+                .map(|_| {
+                    let radius = 0.1 + next() * rmax;
+                    Obstacle {
+                        center: DVec2::new(next() * side, next() * side),
+                        radius,
+                        influence: 2.0 * radius,
+                    }
+                })
+                .collect();
+            let cells = ObstacleCells::build(&obstacles, reach);
+            for _ in 0..2_000 {
+                let p = DVec2::new(next() * side * 1.1 - 0.05 * side, next() * side);
+                let near: Vec<usize> = cells.near(p).collect();
+                assert!(near.windows(2).all(|w| w[0] < w[1]), "{near:?}");
+                let got: Vec<usize> = near
+                    .into_iter()
+                    .filter(|&k| obstacles[k].clearance(p) <= reach)
+                    .collect();
+                let scan: Vec<usize> = (0..m)
+                    .filter(|&k| obstacles[k].clearance(p) <= reach)
+                    .collect();
+                assert_eq!(got, scan, "{p:?}, reach {reach}");
+            }
+        }
+        let all = ObstacleCells::all(3);
+        assert_eq!(
+            all.near(DVec2::new(1e7, -1e7)).collect::<Vec<_>>(),
+            [0, 1, 2]
+        );
+        assert_eq!(ObstacleCells::build(&[], 5.0).near(DVec2::ZERO).count(), 0);
     }
 
     #[test]

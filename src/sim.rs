@@ -10,7 +10,7 @@
 //! no randomness, no parallelism and no iteration over hashed containers.
 
 use crate::controller::{evaluate, Command, Evaluation};
-use crate::grid::Neighbours;
+use crate::grid::{Neighbours, ObstacleCells};
 use crate::obstacle::Obstacle;
 use crate::params::Params;
 use crate::safety;
@@ -103,8 +103,10 @@ pub struct Report {
     /// Smallest distance between two robots at any sampled time (`None`: fewer than two
     /// interacting robots).
     pub min_pair_distance: Option<f64>,
-    /// Smallest distance from a robot to an obstacle surface at any sampled time (negative:
-    /// inside). `None` without obstacles.
+    /// Smallest distance from a robot to the surface of an obstacle it senses (within
+    /// `max(R_s, 2·r_ij)`) at any sampled time (negative: inside). `None` when no robot ever
+    /// came that close to an obstacle (or there are none). Obstacles farther away play no part
+    /// in the method, and leaving them out keeps a step O(N) among many obstacles.
     pub min_obstacle_clearance: Option<f64>,
     /// Violation events: each time a pair of robots comes closer than `2·safe_radius`, and
     /// each time a robot enters an obstacle disc, counts once (a violation that lasts several
@@ -144,9 +146,13 @@ pub struct Simulation {
     // current step's before the two are swapped.
     pair_violating: Vec<(u32, u32)>,
     pair_scratch: Vec<(u32, u32)>,
-    // Robot `i` inside obstacle `k`: `obstacle_violating[i·M + k]`.
-    obstacle_violating: Vec<bool>,
+    // The pairs `(robot, obstacle)` with the robot inside the disc, ascending, and the
+    // current step's.
+    obstacle_violating: Vec<(u32, u32)>,
+    obstacle_scratch: Vec<(u32, u32)>,
     neighbourhood: Neighbourhood,
+    // The obstacles near each point (static: built once).
+    obstacle_cells: ObstacleCells,
     // Scratch, reused every step.
     near: Neighbours,
     positions: Vec<DVec2>,
@@ -198,8 +204,16 @@ impl Simulation {
             // Room for a violating pair per robot: a violation allocates nothing.
             pair_violating: Vec::with_capacity(n),
             pair_scratch: Vec::with_capacity(n),
-            obstacle_violating: vec![false; n * s.obstacles.len()],
+            obstacle_violating: Vec::with_capacity(n),
+            obstacle_scratch: Vec::with_capacity(n),
             neighbourhood,
+            obstacle_cells: match neighbourhood {
+                Neighbourhood::Grid => ObstacleCells::build(
+                    &s.obstacles,
+                    s.params.sense_radius.max(2.0 * s.params.safe_radius),
+                ),
+                Neighbourhood::AllPairs => ObstacleCells::all(s.obstacles.len()),
+            },
             near: Neighbours::new(),
             positions: Vec::with_capacity(n),
             constraints: safety::Constraints::new(),
@@ -281,8 +295,13 @@ impl Simulation {
             let me = self.robots[i];
             self.neighbours.clear();
             // Either way the sensed robots come in ascending index: the grid's lists are sorted.
+            // The grid's lists hold the robots within its reach: when that is the sensing
+            // radius, they are the sensed robots (the same test on the same bits).
+            let listed_are_sensed = grid && self.reach() == rs;
             let mut sense = |j: usize, other: &Robot| {
-                if j != i && other.pose.p.distance_squared(me.pose.p) <= rs * rs {
+                if listed_are_sensed
+                    || (j != i && other.pose.p.distance_squared(me.pose.p) <= rs * rs)
+                {
                     self.neighbours.push(Neighbour {
                         position: other.pose.p,
                         speed: self.speeds[j],
@@ -302,9 +321,11 @@ impl Simulation {
                 p: me.pose.error_to(me.goal).p,
                 theta: me.heading_error,
             };
+            let obstacles = &self.obstacles;
             let sensed = self
-                .obstacles
-                .iter()
+                .obstacle_cells
+                .near(me.pose.p)
+                .map(|k| &obstacles[k])
                 .filter(|o| o.clearance(me.pose.p) <= rs);
             let mut e = evaluate(
                 &self.params,
@@ -353,7 +374,8 @@ impl Simulation {
     /// neighbour lists it reuses).
     fn observe(&mut self) {
         let p = self.params;
-        let m = self.obstacles.len();
+        let reach = self.reach();
+        self.obstacle_scratch.clear();
         for (i, r) in self.robots.iter().enumerate() {
             let inside =
                 r.position_error() <= p.tol_position && r.heading_error_abs() <= p.tol_heading;
@@ -362,13 +384,20 @@ impl Simulation {
                 (false, Some(_)) => self.inside_since[i] = None,
                 _ => {}
             }
-            for (k, o) in self.obstacles.iter().enumerate() {
-                let c = o.clearance(r.pose.p);
-                self.min_clearance = Some(self.min_clearance.map_or(c, |m: f64| m.min(c)));
-                let was = std::mem::replace(&mut self.obstacle_violating[i * m + k], c < 0.0);
-                self.violations += usize::from(c < 0.0 && !was);
+            // The obstacles within the reach, as the robot senses them: the clearance metric
+            // and the violations (a robot inside a disc is within every reach).
+            for k in self.obstacle_cells.near(r.pose.p) {
+                let c = self.obstacles[k].clearance(r.pose.p);
+                if c <= reach {
+                    self.min_clearance = Some(self.min_clearance.map_or(c, |m: f64| m.min(c)));
+                }
+                if c < 0.0 {
+                    self.obstacle_scratch.push((i as u32, k as u32));
+                }
             }
         }
+        self.violations += new_events(&self.obstacle_violating, &self.obstacle_scratch);
+        std::mem::swap(&mut self.obstacle_violating, &mut self.obstacle_scratch);
         if self.independent {
             return;
         }
@@ -404,7 +433,6 @@ impl Simulation {
                 }
                 // No pair within the reach: the closest pair matters only while no closer one
                 // has been seen, which a swarm at bounded density leaves behind at once.
-                let reach = self.reach();
                 if min.is_none() && self.min_pair.map_or(true, |m| m > reach) {
                     for i in 0..n {
                         for j in i + 1..n {
@@ -418,15 +446,7 @@ impl Simulation {
         if let Some(d) = min {
             self.min_pair = Some(self.min_pair.map_or(d, |m: f64| m.min(d)));
         }
-        // A violation event: a pair violating now that was not at the last observation (both
-        // lists ascending: a merge).
-        let mut was = self.pair_violating.iter().peekable();
-        for now in &self.pair_scratch {
-            while was.next_if(|w| *w < now).is_some() {}
-            if was.next_if(|w| *w == now).is_none() {
-                self.violations += 1;
-            }
-        }
+        self.violations += new_events(&self.pair_violating, &self.pair_scratch);
         std::mem::swap(&mut self.pair_violating, &mut self.pair_scratch);
     }
 
@@ -457,6 +477,20 @@ impl Simulation {
 
 /// One recorded sample of one robot: `[t, x, y, θ, v, ω]`.
 pub type Sample = [f64; 6];
+
+/// Violation events: the pairs violating `now` that were not at the last observation (`was`;
+/// both lists ascending: a merge).
+fn new_events(was: &[(u32, u32)], now: &[(u32, u32)]) -> usize {
+    let mut was = was.iter().peekable();
+    let mut events = 0;
+    for pair in now {
+        while was.next_if(|w| *w < pair).is_some() {}
+        if was.next_if(|w| *w == pair).is_none() {
+            events += 1;
+        }
+    }
+    events
+}
 
 /// Runs a scenario to its end and returns the report, calling `on_step` after time 0 and
 /// after every step (for recording trajectories).

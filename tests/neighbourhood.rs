@@ -8,7 +8,7 @@ use wasm_bindgen_test::wasm_bindgen_test as test;
 #[cfg(target_arch = "wasm32")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
-use dvf::presets::{circle_swap, crowd, PRESETS};
+use dvf::presets::{circle_swap, crowd, crowd_with_obstacles, PRESETS};
 use dvf::sim::{Neighbourhood, Robot, Simulation};
 use dvf::sweep::{random_scenario, Recipe};
 use dvf::Scenario;
@@ -112,4 +112,35 @@ fn random_scenarios_give_the_same_bits() {
         }
     }
     assert!(done >= 10, "only {done} random scenarios could be placed");
+}
+
+/// Many obstacles (the obstacle cells hold a few per cell), and robots that enter discs whose
+/// rings are too thin to turn them (the barrier is off): the same sensing, clearances and
+/// violation events as the scan over every obstacle.
+#[test]
+fn obstacle_fields_give_the_same_bits() {
+    let mut s = crowd_with_obstacles(150, 40);
+    s.duration = 30.0;
+    same_bits(&s, usize::MAX);
+    let mut thin = Scenario::from_json(
+        r#"{"duration": 8, "params": {"barrier_rate": null},
+            "robots": [{"start": [-50, 0, 0], "goal": [50, 0, 0]},
+                       {"start": [-50, 20, 0], "goal": [50, 20, 0]},
+                       {"start": [50, -20, 3.14159], "goal": [-50, -20, 3.14159]}],
+            "obstacles": [{"center": [0, 0], "radius": 5, "influence": 5.01},
+                          {"center": [0, 20], "radius": 5, "influence": 5.01},
+                          {"center": [0, -20], "radius": 5, "influence": 5.01},
+                          {"center": [300, 300], "radius": 1, "influence": 2}]}"#,
+    )
+    .unwrap();
+    let r = dvf::run(&thin);
+    assert!(r.violations >= 3, "every robot should enter a disc: {r:?}");
+    same_bits(&thin, usize::MAX);
+    // An obstacle larger than the cells allow is listed everywhere.
+    thin.obstacles.push(dvf::Obstacle {
+        center: glam::DVec2::new(0.0, 1e5),
+        radius: 9e4,
+        influence: 9.1e4,
+    });
+    same_bits(&thin, usize::MAX);
 }
