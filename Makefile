@@ -8,8 +8,10 @@ tools:
 	bash .ci/install
 
 # Release build of the wasm package into www/pkg (wasm-opt from npm's binaryen, see .ci/install).
+# The crate at opt-level 2 for wasm (3 natively): 6 KB smaller, as fast in Node and Chromium
+# (README, Performance), and within the 250 KB budget.
 build-wasm: tools
-	wasm-pack build --release --target web --out-dir www/pkg --no-typescript
+	CARGO_PROFILE_RELEASE_OPT_LEVEL=2 wasm-pack build --release --target web --out-dir www/pkg --no-typescript
 
 serve: build-wasm
 	@echo "dvf playground: http://127.0.0.1:$(PORT)/"

@@ -29,7 +29,6 @@
 //!
 //! A missing pair distance (fewer than two interacting robots) is NaN.
 
-use crate::controller::evaluate;
 use crate::error::Error;
 use crate::field::integral_curve;
 use crate::grid::{closest_pair_below, min_pair_distance, Neighbours};
@@ -504,8 +503,7 @@ impl Live {
         grid_side("nx", nx)?;
         grid_side("ny", ny)?;
         check_bounds(bounds)?;
-        let params = *self.sim.params();
-        let rs = params.sense_radius;
+        let rs = self.sim.params().sense_radius;
         let independent = self.scenario.independent;
         let [x0, y0, x1, y1] = bounds;
         // The robots that can be sensed from the box, binned in cells at least R_s wide: a
@@ -548,18 +546,11 @@ impl Live {
                         }
                     }));
                 }
-                let sensed = self
-                    .sim
-                    .obstacles()
-                    .iter()
-                    .filter(|o| o.clearance(pose.p) <= rs);
-                let e = evaluate(
-                    &params,
+                let e = self.sim.evaluate_at(
                     pose,
                     pose.error_to(robot.goal),
                     robot.last.command.v.abs(),
-                    sensed,
-                    self.neighbours.iter().copied(),
+                    &self.neighbours,
                 );
                 self.field.extend_from_slice(&[x, y, e.field.x, e.field.y]);
             }
@@ -847,7 +838,9 @@ fn check_bounds(b: [f64; 4]) -> Result<(), Error> {
 
 /// The smallest distance between two interacting robots now (NaN when there is no pair):
 /// a scan over all pairs for a few robots, the grid search of
-/// [`crate::grid::min_pair_distance`] (the same bits) for more.
+/// [`crate::grid::min_pair_distance`] (the same bits) for more. Not inlined: one copy for its
+/// three callers keeps the wasm module small.
+#[inline(never)]
 fn min_pair(
     sim: &Simulation,
     independent: bool,
@@ -886,6 +879,7 @@ fn all_converged(sim: &Simulation) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::controller::evaluate;
     // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     use crate::approx::assert_close;
     use crate::presets::{preset, DEFAULT_PRESET};

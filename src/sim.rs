@@ -321,20 +321,13 @@ impl Simulation {
                 p: me.pose.error_to(me.goal).p,
                 theta: me.heading_error,
             };
+            let mut e = self.evaluate_at(me.pose, err, self.speeds[i], &self.neighbours);
             let obstacles = &self.obstacles;
             let sensed = self
                 .obstacle_cells
                 .near(me.pose.p)
                 .map(|k| &obstacles[k])
                 .filter(|o| o.clearance(me.pose.p) <= rs);
-            let mut e = evaluate(
-                &self.params,
-                me.pose,
-                err,
-                self.speeds[i],
-                sensed.clone(),
-                self.neighbours.iter().copied(),
-            );
             e.command = safety::filter_with(
                 &mut self.constraints,
                 &self.params,
@@ -350,7 +343,40 @@ impl Simulation {
         }
     }
 
+    /// The controller ([`evaluate`]) of a robot at `pose` with error `err` (to its goal) and
+    /// speed `speed`, among the obstacles within `R_s` of it and the sensed `neighbours`: what
+    /// a step computes for each robot, and what the playground samples as the field around one.
+    /// One function for both, so that the controller is compiled once into the wasm module.
+    #[inline(never)]
+    #[must_use]
+    pub fn evaluate_at(
+        &self,
+        pose: Pose,
+        err: Pose,
+        speed: f64,
+        neighbours: &[Neighbour],
+    ) -> Evaluation {
+        let rs = self.params.sense_radius;
+        let obstacles = &self.obstacles;
+        let sensed = self
+            .obstacle_cells
+            .near(pose.p)
+            .map(|k| &obstacles[k])
+            .filter(|o| o.clearance(pose.p) <= rs);
+        evaluate(
+            &self.params,
+            pose,
+            err,
+            speed,
+            sensed,
+            neighbours.iter().copied(),
+        )
+    }
+
     /// Advances one step of `dt`.
+    // Not inlined: the playground calls it from several places, and one copy keeps the wasm
+    // module small (a call per step costs nothing next to the step).
+    #[inline(never)]
     pub fn step(&mut self) {
         for (r, c) in self.robots.iter_mut().zip(&self.commands) {
             r.pose = integrate(r.pose, *c, self.dt);
