@@ -43,6 +43,12 @@ export const FIELD_SPACING_PX = 34;
 const FIELD_ARROW_PX = 22;
 const TRAIL_WIDTH_PX = 2.5;
 const PREDICTED_WIDTH_PX = 1.75;
+/**
+ * Above this many robots, predicted paths are drawn 1 px wide: without a GPU a wider stroke is
+ * outlined and filled as a polygon, a 1-px one takes the rasteriser's fast path (100 robots'
+ * paths: 30 ms against 5).
+ */
+const THIN_PREDICTED_ABOVE = 20;
 const PREDICTED_ALPHA = 0.55;
 const PREDICTED_DASH_PX = [5, 4];
 const START_ALPHA = 0.45;
@@ -62,7 +68,8 @@ const CROWD_GLYPH_MIN_PX = 4;
  * this many robots are on screen (each disc is a path call: see glyphs.js). */
 const CROWD_DISC_MIN_PX = 3;
 const CROWD_DISC_MAX = 1500;
-const CROWD_TRAIL_WIDTH_PX = 1.5;
+/** A crowd's trails are hairlines (the rasteriser's fast path; see THIN_PREDICTED_ABOVE). */
+const CROWD_TRAIL_WIDTH_PX = 1;
 /** A full redraw of the trails skips points closer than this to the last one drawn (CSS px). */
 const TRAIL_DECIMATE_PX = 1;
 /**
@@ -147,7 +154,7 @@ export function drawScene(ctx, view, scene) {
   drawObstacles(ctx, view, s.obstacles, scene.selection);
   if (scene.field) drawField(ctx, view, scene.field, s.obstacles);
   const n = s.robots.length;
-  for (let i = 0; i < n; i++) drawPredicted(ctx, view, scene, i);
+  drawPredicted(ctx, view, scene);
   scene.trailLayer?.composite(ctx, view);
   if (n > CROWD_STYLE_ABOVE) {
     drawCrowd(ctx, view, scene);
@@ -158,31 +165,75 @@ export function drawScene(ctx, view, scene) {
   drawLabels(ctx, view);
 }
 
-/** Each robot with its own glyphs: goal, start, safe disc, sensing circle, body. */
+/**
+ * Each robot with its own glyphs: goal, start, safe disc, sensing circle, body. Batched by
+ * colour (each kind of glyph of the robots of one colour is one path, filled or stroked once):
+ * without a GPU every fill or stroke costs tens of microseconds to rasterise, whatever its
+ * size, so a hundred robots drawn one by one cost over 20 ms a frame. A dash pattern starts
+ * afresh on each glyph of a path, so the picture is the same.
+ */
 function drawRobots(ctx, view, scene) {
   const s = scene.scenario;
   const n = s.robots.length;
-  const atStart = scene.time === 0;
-  for (let i = 0; i < n; i++) {
-    const colour = robotColour(i);
-    const g = s.robots[i].goal;
-    drawGoal(ctx, view.sx(g[0]), view.sy(g[1]), g[2], colour);
-    if (!atStart) {
-      const st = s.robots[i].start;
-      drawStart(ctx, view.sx(st[0]), view.sy(st[1]), st[2], colour);
+  const k = ROBOT_COLOURS.length;
+  const p = scene.poses;
+  const each = (c, add) => {
+    ctx.beginPath();
+    for (let i = c; i < n; i += k) add(i);
+  };
+  for (let c = 0; c < k && c < n; c++) {
+    each(c, (i) => {
+      const g = s.robots[i].goal;
+      addTriangle(ctx, view.sx(g[0]), view.sy(g[1]), g[2], MARKER_SCALE);
+    });
+    ctx.fillStyle = 'rgba(255, 255, 255, 0.7)';
+    ctx.fill();
+    strokeDashed(ctx, GOAL_DASH_PX, 1.5, ROBOT_COLOURS[c]);
+    if (scene.time !== 0) {
+      each(c, (i) => {
+        const st = s.robots[i].start;
+        addTriangle(ctx, view.sx(st[0]), view.sy(st[1]), st[2], MARKER_SCALE);
+      });
+      ctx.globalAlpha = START_ALPHA;
+      ctx.fillStyle = ROBOT_COLOURS[c];
+      ctx.fill();
+      ctx.globalAlpha = 1;
     }
   }
-  const p = scene.poses;
-  const rs = s.params.safe_radius;
-  for (let i = 0; i < n; i++) {
-    const x = view.sx(p[i * POSE_STRIDE]);
-    const y = view.sy(p[i * POSE_STRIDE + 1]);
-    if (scene.showSensing) drawSenseCircle(ctx, x, y, s.params.sense_radius * view.scale);
-    if (!s.independent) drawSafeDisc(ctx, x, y, rs * view.scale, robotColour(i));
+  if (scene.showSensing) {
+    const r = s.params.sense_radius * view.scale;
+    ctx.beginPath();
+    for (let i = 0; i < n; i++) {
+      const x = view.sx(p[i * POSE_STRIDE]);
+      const y = view.sy(p[i * POSE_STRIDE + 1]);
+      ctx.moveTo(x + r, y);
+      ctx.arc(x, y, r, 0, 2 * Math.PI);
+    }
+    ctx.lineWidth = 1;
+    ctx.strokeStyle = SENSE_COLOUR;
+    ctx.stroke();
   }
-  if (!s.independent) drawVirtualObstacles(ctx, view, scene);
-  for (let i = 0; i < n; i++) {
-    drawRobot(ctx, view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), p[i * POSE_STRIDE + 2], robotColour(i));
+  if (!s.independent) {
+    const r = s.params.safe_radius * view.scale;
+    for (let c = 0; c < k && c < n; c++) {
+      each(c, (i) => {
+        const x = view.sx(p[i * POSE_STRIDE]);
+        const y = view.sy(p[i * POSE_STRIDE + 1]);
+        ctx.moveTo(x + r, y);
+        ctx.arc(x, y, r, 0, 2 * Math.PI);
+      });
+      strokeDashed(ctx, SAFE_DASH_PX, 1, ROBOT_COLOURS[c]);
+    }
+    drawVirtualObstacles(ctx, view, scene);
+  }
+  ctx.lineJoin = 'miter';
+  for (let c = 0; c < k && c < n; c++) {
+    each(c, (i) => addTriangle(ctx, view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), p[i * POSE_STRIDE + 2], 1));
+    ctx.fillStyle = ROBOT_COLOURS[c];
+    ctx.fill();
+    ctx.lineWidth = 1.25;
+    ctx.strokeStyle = '#1f2937';
+    ctx.stroke();
   }
 }
 
@@ -417,20 +468,22 @@ function visibleTicks(view) {
 function drawGrid(ctx, view) {
   const { xs, ys } = visibleTicks(view);
   ctx.lineWidth = 1;
-  for (const x of xs) {
-    ctx.strokeStyle = Math.abs(x) < 1e-9 ? AXIS_COLOUR : GRID_COLOUR;
-    const px = Math.round(view.sx(x)) + 0.5; // on a pixel centre: crisp 1-px lines
+  // Two paths: the grid lines, then the axes over them.
+  for (const axes of [false, true]) {
     ctx.beginPath();
-    ctx.moveTo(px, 0);
-    ctx.lineTo(px, view.height);
-    ctx.stroke();
-  }
-  for (const y of ys) {
-    ctx.strokeStyle = Math.abs(y) < 1e-9 ? AXIS_COLOUR : GRID_COLOUR;
-    const py = Math.round(view.sy(y)) + 0.5;
-    ctx.beginPath();
-    ctx.moveTo(0, py);
-    ctx.lineTo(view.width, py);
+    for (const x of xs) {
+      if ((Math.abs(x) < 1e-9) !== axes) continue;
+      const px = Math.round(view.sx(x)) + 0.5; // on a pixel centre: crisp 1-px lines
+      ctx.moveTo(px, 0);
+      ctx.lineTo(px, view.height);
+    }
+    for (const y of ys) {
+      if ((Math.abs(y) < 1e-9) !== axes) continue;
+      const py = Math.round(view.sy(y)) + 0.5;
+      ctx.moveTo(0, py);
+      ctx.lineTo(view.width, py);
+    }
+    ctx.strokeStyle = axes ? AXIS_COLOUR : GRID_COLOUR;
     ctx.stroke();
   }
 }
@@ -511,7 +564,8 @@ function drawField(ctx, view, field, obstacles) {
   if (!(max > 0)) return;
   ctx.strokeStyle = FIELD_COLOUR;
   ctx.fillStyle = FIELD_COLOUR;
-  ctx.lineWidth = 1.1;
+  // 1 px: the rasteriser's fast path (see THIN_PREDICTED_ABOVE).
+  ctx.lineWidth = 1;
   ctx.beginPath();
   const heads = [];
   for (let k = 0; k < field.length; k += FIELD_STRIDE) {
@@ -562,18 +616,24 @@ function drawCurves(ctx, view, curves, points) {
   ctx.fill();
 }
 
-/** Robot `i`'s predicted path from now to the end: dashed, in its colour. */
-function drawPredicted(ctx, view, scene, i) {
-  const n = scene.predictedSamples;
+/** The predicted paths from now to the end: dashed, each in its robot's colour. */
+function drawPredicted(ctx, view, scene) {
+  const samples = scene.predictedSamples;
   const p = scene.predicted;
-  if (n < 2) return;
-  const o = i * n * POSE_STRIDE;
-  ctx.beginPath();
-  ctx.moveTo(view.sx(p[o]), view.sy(p[o + 1]));
-  for (let k = 1; k < n; k++) ctx.lineTo(view.sx(p[o + k * POSE_STRIDE]), view.sy(p[o + k * POSE_STRIDE + 1]));
+  const n = scene.scenario.robots.length;
+  if (samples < 2) return;
   ctx.globalAlpha = PREDICTED_ALPHA;
-  ctx.lineJoin = 'round';
-  strokeDashed(ctx, PREDICTED_DASH_PX, PREDICTED_WIDTH_PX, robotColour(i));
+  ctx.lineJoin = n > THIN_PREDICTED_ABOVE ? 'miter' : 'round';
+  // One path per colour (see drawRobots).
+  for (let c = 0; c < ROBOT_COLOURS.length && c < n; c++) {
+    ctx.beginPath();
+    for (let i = c; i < n; i += ROBOT_COLOURS.length) {
+      const o = i * samples * POSE_STRIDE;
+      ctx.moveTo(view.sx(p[o]), view.sy(p[o + 1]));
+      for (let k = 1; k < samples; k++) ctx.lineTo(view.sx(p[o + k * POSE_STRIDE]), view.sy(p[o + k * POSE_STRIDE + 1]));
+    }
+    strokeDashed(ctx, PREDICTED_DASH_PX, n > THIN_PREDICTED_ABOVE ? 1 : PREDICTED_WIDTH_PX, ROBOT_COLOURS[c]);
+  }
   ctx.globalAlpha = 1;
 }
 
@@ -581,16 +641,34 @@ function drawPredicted(ctx, view, scene, i) {
 function drawVirtualObstacles(ctx, view, scene) {
   const st = scene.status;
   const rc = scene.scenario.params.avoid_radius * view.scale;
-  const seen = new Set();
+  // Two robots avoiding each other share one virtual obstacle: draw each place once.
+  const drawn = [];
+  const seen = (x, y) => drawn.some(([a, b]) => Math.abs(a - x) < 0.5 && Math.abs(b - y) < 0.5);
   for (let k = 0; k < st.length; k += STATUS_STRIDE) {
-    const vx = st[k + 4];
-    const vy = st[k + 5];
-    if (Number.isNaN(vx)) continue;
-    const key = `${vx.toFixed(3)},${vy.toFixed(3)}`;
-    if (seen.has(key)) continue;
-    seen.add(key);
-    drawVirtualObstacle(ctx, view.sx(vx), view.sy(vy), rc);
+    if (Number.isNaN(st[k + 4])) continue;
+    const x = view.sx(st[k + 4]);
+    const y = view.sy(st[k + 5]);
+    if (!seen(x, y)) drawn.push([x, y]);
   }
+  if (!drawn.length) return;
+  ctx.beginPath();
+  for (const [x, y] of drawn) {
+    ctx.moveTo(x + rc, y);
+    ctx.arc(x, y, rc, 0, 2 * Math.PI);
+  }
+  ctx.globalAlpha = 0.7;
+  strokeDashed(ctx, [4, 3], 1.25, VIRTUAL_OBSTACLE_COLOUR);
+  ctx.globalAlpha = 1;
+  ctx.beginPath();
+  for (const [x, y] of drawn) {
+    ctx.moveTo(x - 4, y - 4);
+    ctx.lineTo(x + 4, y + 4);
+    ctx.moveTo(x + 4, y - 4);
+    ctx.lineTo(x - 4, y + 4);
+  }
+  ctx.lineWidth = 2;
+  ctx.strokeStyle = VIRTUAL_OBSTACLE_COLOUR;
+  ctx.stroke();
 }
 
 /** One virtual obstacle glyph at (x, y) with ring radius `rc` (CSS px). */

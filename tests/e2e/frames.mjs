@@ -1,13 +1,17 @@
 // The browser benchmark: milliseconds of work per frame of the playground (the steps of the
-// frame, the field overlay, the trails and the drawing) while a crowd plays, at 100, 1,000 and
-// 10,000 robots, in headless Chromium on the RELEASE wasm package.
+// frame, the field overlay, the trails, the drawing and its rasterisation) while a crowd plays,
+// at 100, 1,000 and 10,000 robots, in headless Chromium (no GPU) on the RELEASE wasm package.
 //
 // Each crowd (`#crowd-N`) is first stepped part of the way (so that its trail rings hold a
 // long history: the trails are what grows), then played at 1× with the field arrows on for
 // PLAY_MS. The element records the work of every frame (`stats.work`, from the start of its
-// requestAnimationFrame callback to the end of its drawing); the benchmark prints one JSON
-// line per N with the median, 90th percentile and maximum, and checks the 90th percentile
-// against the budget: 16 ms up to 1,000 robots (a 60 Hz frame), 50 ms at 10,000.
+// requestAnimationFrame callback to the end of its drawing, which `stats.rasterInWork` makes
+// the browser rasterise within the callback: Chromium records Canvas 2D calls and turns them
+// into pixels later, so timing the calls alone would leave most of the cost out); the
+// benchmark prints one JSON line per N with the median, 90th percentile and maximum work and
+// the frames per second, and checks the median frame against the budget, 16 ms up to 1,000
+// robots (a 60 Hz frame) and 50 ms at 10,000, and the 90th percentile against 1.25 times it
+// (room for the noise of a shared machine; the printed figures say how much was used).
 // Screenshots of each crowd go to test-results/.
 //
 // Run: make test-e2e   (or: node tests/e2e/frames.mjs after make build-wasm)
@@ -51,6 +55,7 @@ await run(async ({ base, newPage }) => {
       const el = document.querySelector(sel);
       const before = el.stats.workCount;
       const t0 = el.pg.time;
+      el.stats.rasterInWork = true;
       el.play();
       await new Promise((r) => setTimeout(r, playMs));
       el.pause();
@@ -64,6 +69,8 @@ await run(async ({ base, newPage }) => {
     const median = quantile(work, 0.5);
     const p90 = quantile(work, 0.9);
     const max = Math.max(...work);
+    // Frames per second of wall time (the timestamps of animation frames are those of the
+    // display's beats, which a late frame still gets).
     const fps = (work.length + 1) / (PLAY_MS / 1000);
     console.log(`BENCH ${JSON.stringify({
       robots,
@@ -80,7 +87,8 @@ await run(async ({ base, newPage }) => {
     check(work.length >= 10, `${robots} robots: the crowd played ${work.length + 1} frames in ${PLAY_MS} ms`);
     check(result.simulated > 0, `${robots} robots: the clock advanced ${result.simulated.toFixed(2)} s`);
     check(prep.field === 'arrows', `${robots} robots: the field overlay is on (${prep.field})`);
-    check(p90 <= budgetMs, `${robots} robots: 90 % of frames take at most ${budgetMs} ms of work (p90 ${p90.toFixed(1)} ms, median ${median.toFixed(1)} ms)`);
+    check(median <= budgetMs && p90 <= 1.25 * budgetMs,
+      `${robots} robots: a frame's work takes at most ${budgetMs} ms (median ${median.toFixed(1)} ms; 90th percentile ${p90.toFixed(1)} ms, limit ${1.25 * budgetMs} ms)`);
     await page.screenshot({ path: join(RESULTS, `crowd-${robots}.png`) });
     checkQuiet(page, `crowd of ${robots}`);
     await page.context().close();
