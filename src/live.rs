@@ -10,18 +10,21 @@
 //!   its start. After an edit the heading error restarts on its principal branch (the
 //!   continued branch of [`crate::se2::continue_branch`] belongs to the path before the edit).
 //! - Every edit recomputes the predicted paths: a copy of the simulation run from the current
-//!   state to the scenario's end, so that the prediction is exactly what playing will show.
+//!   state towards the scenario's end (within [`PREDICTION_WORK`]), so that the prediction is
+//!   exactly what playing will show.
 //!
 //! # Buffers (all flat `f64`, robots in scenario order)
 //! - poses `[robots · 3]`: `x, y, θ` now.
-//! - trails `[robots · TRAIL_CAPACITY · 3]`: a ring of past `x, y, θ` per robot, written at
-//!   slot [`Live::trail_head`] (the next to write, shared by all robots); robot `i` holds its
-//!   last [`Live::trail_len`]`(i)` samples, the oldest at slot
-//!   `(head − len + TRAIL_CAPACITY) % TRAIL_CAPACITY`. The time and minimum pair distance of
-//!   each slot are in two rings of `TRAIL_CAPACITY` ([`Live::trail_times`],
+//! - trails `[robots · cap · 3]`, `cap` = [`Live::trail_capacity`] (a fixed budget of samples
+//!   shared by all robots): a ring of past `x, y, θ` per robot, written at slot
+//!   [`Live::trail_head`] (the next to write, shared by all robots); robot `i` holds its last
+//!   [`Live::trail_len`]`(i)` samples, the oldest at slot `(head − len + cap) % cap`; sample `g`
+//!   since the reset is in slot `g % cap` ([`Live::recorded`]). The time and minimum pair
+//!   distance of each slot are in two rings of `cap` ([`Live::trail_times`],
 //!   [`Live::trail_min_pair`]), whose own length is [`Live::history_len`].
 //! - predicted `[robots · samples · 3]`, with [`Live::predicted_times`] and
-//!   [`Live::predicted_min_pair`] `[samples]`; sample 0 is the current state.
+//!   [`Live::predicted_min_pair`] `[samples]`; sample 0 is the current state (no samples above
+//!   [`MAX_PREDICTED_ROBOTS`] robots).
 //! - status `[robots · 6]`: `v, ω, Π ς_i, ς_c, vo_x, vo_y` (the virtual obstacle, NaN when
 //!   none).
 //! - field grid `[nx · ny · 4]`: `x, y, Γx, Γy`, row by row from `ymin`.
@@ -128,7 +131,8 @@ impl Live {
     /// A live simulation of `scenario` at `t = 0` (validated here), with its prediction.
     ///
     /// # Errors
-    /// The scenario's first invalid field, or more than [`MAX_LIVE_ROBOTS`] robots.
+    /// The scenario's first invalid field (more than [`MAX_LIVE_ROBOTS`] robots included), or more than
+    /// [`MAX_LIVE_STEPS`] steps.
     pub fn new(scenario: Scenario) -> Result<Self, Error> {
         check(&scenario)?;
         let sim = Simulation::new(&scenario);
@@ -743,18 +747,10 @@ impl Live {
     }
 }
 
-/// The scenario checks plus the playground's robot limit.
+/// The scenario checks plus the playground's step limit.
 fn check(s: &Scenario) -> Result<(), Error> {
+    // The robot count is the scenario's own limit (MAX_LIVE_ROBOTS): validated there.
     s.validate()?;
-    if s.robots.len() > MAX_LIVE_ROBOTS {
-        return Err(Error::Invalid {
-            field: "robots".into(),
-            message: format!(
-                "the playground simulates at most {MAX_LIVE_ROBOTS} robots live, not {} (the `dvf` command line takes more)",
-                s.robots.len()
-            ),
-        });
-    }
     let steps = s.steps();
     if steps > MAX_LIVE_STEPS {
         return Err(Error::Invalid {
