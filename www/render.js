@@ -44,11 +44,16 @@ const FIELD_ARROW_PX = 22;
 const TRAIL_WIDTH_PX = 2.5;
 const PREDICTED_WIDTH_PX = 1.75;
 /**
- * Above this many robots, predicted paths are drawn 1 px wide: without a GPU a wider stroke is
- * outlined and filled as a polygon, a 1-px one takes the rasteriser's fast path (100 robots'
- * paths: 30 ms against 5).
+ * Above this many robots, predicted paths are hairlines, one device pixel wide: without a GPU
+ * a wider stroke is outlined and filled as a polygon, a hairline takes the rasteriser's fast
+ * path (100 robots' paths: 30 ms against 5).
  */
 const THIN_PREDICTED_ABOVE = 20;
+
+/** One device pixel in CSS pixels: the width of a hairline (see THIN_PREDICTED_ABOVE). */
+function hairline(scene) {
+  return 1 / (scene.dpr || 1);
+}
 const PREDICTED_ALPHA = 0.55;
 const PREDICTED_DASH_PX = [5, 4];
 const START_ALPHA = 0.45;
@@ -68,8 +73,6 @@ const CROWD_GLYPH_MIN_PX = 4;
  * this many robots are on screen (each disc is a path call: see glyphs.js). */
 const CROWD_DISC_MIN_PX = 3;
 const CROWD_DISC_MAX = 1500;
-/** A crowd's trails are hairlines (the rasteriser's fast path; see THIN_PREDICTED_ABOVE). */
-const CROWD_TRAIL_WIDTH_PX = 1;
 /** A full redraw of the trails skips points closer than this to the last one drawn (CSS px). */
 const TRAIL_DECIMATE_PX = 1;
 /**
@@ -152,7 +155,7 @@ export function drawScene(ctx, view, scene) {
   drawGrid(ctx, view);
   if (scene.curves) drawCurves(ctx, view, scene.curves, scene.curvePoints);
   drawObstacles(ctx, view, s.obstacles, scene.selection);
-  if (scene.field) drawField(ctx, view, scene.field, s.obstacles);
+  if (scene.field) drawField(ctx, view, scene.field, s.obstacles, hairline(scene));
   const n = s.robots.length;
   drawPredicted(ctx, view, scene);
   scene.trailLayer?.composite(ctx, view);
@@ -417,7 +420,8 @@ export class TrailLayer {
     const end = scene.recorded;
     const k = ROBOT_COLOURS.length;
     const full = from <= 0;
-    ctx.lineWidth = crowd ? CROWD_TRAIL_WIDTH_PX : TRAIL_WIDTH_PX;
+    // A crowd's trails are hairlines (the rasteriser's fast path; see THIN_PREDICTED_ABOVE).
+    ctx.lineWidth = crowd ? hairline(scene) : TRAIL_WIDTH_PX;
     ctx.lineJoin = 'round';
     ctx.lineCap = 'round';
     for (let c = 0; c < k; c++) {
@@ -556,7 +560,7 @@ export function drawObstacleDisc(ctx, x, y, radius) {
 }
 
 /** Field arrows, each scaled to FIELD_ARROW_PX at the largest magnitude shown (log-ish). */
-function drawField(ctx, view, field, obstacles) {
+function drawField(ctx, view, field, obstacles, width) {
   let max = 0;
   for (let k = 0; k < field.length; k += FIELD_STRIDE) {
     max = Math.max(max, Math.hypot(field[k + 2], field[k + 3]));
@@ -564,8 +568,8 @@ function drawField(ctx, view, field, obstacles) {
   if (!(max > 0)) return;
   ctx.strokeStyle = FIELD_COLOUR;
   ctx.fillStyle = FIELD_COLOUR;
-  // 1 px: the rasteriser's fast path (see THIN_PREDICTED_ABOVE).
-  ctx.lineWidth = 1;
+  // A hairline: the rasteriser's fast path (see THIN_PREDICTED_ABOVE).
+  ctx.lineWidth = width;
   ctx.beginPath();
   const heads = [];
   for (let k = 0; k < field.length; k += FIELD_STRIDE) {
@@ -632,7 +636,7 @@ function drawPredicted(ctx, view, scene) {
       ctx.moveTo(view.sx(p[o]), view.sy(p[o + 1]));
       for (let k = 1; k < samples; k++) ctx.lineTo(view.sx(p[o + k * POSE_STRIDE]), view.sy(p[o + k * POSE_STRIDE + 1]));
     }
-    strokeDashed(ctx, PREDICTED_DASH_PX, n > THIN_PREDICTED_ABOVE ? 1 : PREDICTED_WIDTH_PX, ROBOT_COLOURS[c]);
+    strokeDashed(ctx, PREDICTED_DASH_PX, n > THIN_PREDICTED_ABOVE ? hairline(scene) : PREDICTED_WIDTH_PX, ROBOT_COLOURS[c]);
   }
   ctx.globalAlpha = 1;
 }
