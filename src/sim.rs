@@ -291,13 +291,13 @@ impl Simulation {
             self.positions.extend(self.robots.iter().map(|r| r.pose.p));
             self.near.build_points(&self.positions, reach);
         }
+        // The grid's lists hold the robots within its reach: when that is the sensing radius,
+        // they are the sensed robots (the same test on the same bits).
+        let listed_are_sensed = grid && self.reach() == rs;
         for i in 0..self.robots.len() {
             let me = self.robots[i];
             self.neighbours.clear();
             // Either way the sensed robots come in ascending index: the grid's lists are sorted.
-            // The grid's lists hold the robots within its reach: when that is the sensing
-            // radius, they are the sensed robots (the same test on the same bits).
-            let listed_are_sensed = grid && self.reach() == rs;
             let mut sense = |j: usize, other: &Robot| {
                 if listed_are_sensed
                     || (j != i && other.pose.p.distance_squared(me.pose.p) <= rs * rs)
@@ -322,12 +322,7 @@ impl Simulation {
                 theta: me.heading_error,
             };
             let mut e = self.evaluate_at(me.pose, err, self.speeds[i], &self.neighbours);
-            let obstacles = &self.obstacles;
-            let sensed = self
-                .obstacle_cells
-                .near(me.pose.p)
-                .map(|k| &obstacles[k])
-                .filter(|o| o.clearance(me.pose.p) <= rs);
+            let sensed = sensed_obstacles(&self.obstacles, &self.obstacle_cells, me.pose.p, rs);
             e.command = safety::filter_with(
                 &mut self.constraints,
                 &self.params,
@@ -357,18 +352,12 @@ impl Simulation {
         neighbours: &[Neighbour],
     ) -> Evaluation {
         let rs = self.params.sense_radius;
-        let obstacles = &self.obstacles;
-        let sensed = self
-            .obstacle_cells
-            .near(pose.p)
-            .map(|k| &obstacles[k])
-            .filter(|o| o.clearance(pose.p) <= rs);
         evaluate(
             &self.params,
             pose,
             err,
             speed,
-            sensed,
+            sensed_obstacles(&self.obstacles, &self.obstacle_cells, pose.p, rs),
             neighbours.iter().copied(),
         )
     }
@@ -503,6 +492,20 @@ impl Simulation {
 
 /// One recorded sample of one robot: `[t, x, y, θ, v, ω]`.
 pub type Sample = [f64; 6];
+
+/// The obstacles a robot at `p` senses: those whose surface is within `rs`, ascending (the
+/// cells' candidates, tested).
+fn sensed_obstacles<'a>(
+    obstacles: &'a [Obstacle],
+    cells: &'a ObstacleCells,
+    p: DVec2,
+    rs: f64,
+) -> impl Iterator<Item = &'a Obstacle> + Clone + 'a {
+    cells
+        .near(p)
+        .map(move |k| &obstacles[k])
+        .filter(move |o| o.clearance(p) <= rs)
+}
 
 /// Violation events: the pairs violating `now` that were not at the last observation (`was`;
 /// both lists ascending: a merge).

@@ -18,7 +18,7 @@ import {
   fitCanvas, fittedCamera, handlePoint, makeView, robotColour,
 } from './render.js';
 import { GlyphLayer } from './glyphs.js';
-import { HEADING_COLOUR, PAIR_COLOUR, POSITION_COLOUR, SAFE_COLOUR, drawPlot, plotSeries } from './plots.js';
+import { HEADING_COLOUR, PAIR_COLOUR, POSITION_COLOUR, SAFE_COLOUR, drawPlot, makeSeries, plotSeries } from './plots.js';
 import { buildLegend, buildParams, fillParams } from './panels.js';
 import { MAX_SCENARIO_BYTES, download, fileStem, readScenarioFile, trajectoriesCsv } from './io.js';
 
@@ -755,7 +755,8 @@ export class DvfPlayground extends HTMLElement {
     const { ctx, width, height } = fitCanvas(this.$('plots'));
     ctx.clearRect(0, 0, width, height);
     const s = this.cache.scenario;
-    const series = plotSeries(scene, this.focusRobot);
+    this.series ??= makeSeries();
+    const series = plotSeries(scene, this.focusRobot, this.series);
     const half = height / 2;
     const pairLines = s.independent || s.robots.length < 2 ? [] : [
       { points: series.pastPair, colour: PAIR_COLOUR, axis: 'left' },

@@ -15,16 +15,48 @@ export const PAIR_COLOUR = '#111827';
 export const POSITION_COLOUR = '#0f766e';
 export const HEADING_COLOUR = '#b45309';
 
-/** The past of a ring as `[t, value]` pairs, oldest first (value NaN: skipped). */
-function ringSeries(times, head, len, value) {
-  const cap = times.length;
-  const out = [];
-  for (let k = 0; k < len; k++) {
-    const slot = (head - len + k + cap) % cap;
-    const v = value(slot);
-    if (Number.isFinite(v)) out.push([times[slot], v]);
+/**
+ * A series of points in two reusable typed arrays: `count` points `(t[k], v[k])`. Filled
+ * anew every frame without allocating (the arrays grow only when a series gets longer).
+ */
+class Series {
+  constructor() {
+    this.t = new Float64Array(64);
+    this.v = new Float64Array(64);
+    this.count = 0;
   }
-  return out;
+
+  clear() {
+    this.count = 0;
+    return this;
+  }
+
+  push(t, v) {
+    if (this.count === this.t.length) {
+      const grow = (a) => {
+        const b = new Float64Array(2 * a.length);
+        b.set(a);
+        return b;
+      };
+      this.t = grow(this.t);
+      this.v = grow(this.v);
+    }
+    this.t[this.count] = t;
+    this.v[this.count] = v;
+    this.count += 1;
+  }
+
+  /** Holds the last value to `end` (the prediction stops once every robot has converged). */
+  extendTo(end) {
+    if (this.count > 0 && this.t[this.count - 1] < end) this.push(end, this.v[this.count - 1]);
+    return this;
+  }
+}
+
+/** The six series of the two plots, reused from frame to frame. */
+export function makeSeries() {
+  const names = ['pastPair', 'futurePair', 'pastPos', 'futurePos', 'pastHead', 'futureHead'];
+  return Object.fromEntries(names.map((n) => [n, new Series()]));
 }
 
 /** Wraps an angle to (−π, π]. */
@@ -32,48 +64,56 @@ function wrap(a) {
   return a - 2 * Math.PI * Math.ceil((a - Math.PI) / (2 * Math.PI));
 }
 
-/** Series for the two plots from what the element read from wasm this frame. */
-export function plotSeries(scene, robot) {
+/**
+ * Fills `series` (from makeSeries) for the two plots from what the element read from wasm this
+ * frame: the past from the rings (oldest first, NaN skipped), the future from the prediction.
+ */
+export function plotSeries(scene, robot, series) {
   const cap = scene.trailCapacity;
-  const pastPair = ringSeries(scene.trailTimes, scene.trailHead, scene.historyLength, (s) => scene.trailMinPair[s]);
-  const futurePair = [];
-  for (let k = 0; k < scene.predictedSamples; k++) {
-    const v = scene.predictedMinPair[k];
-    if (Number.isFinite(v)) futurePair.push([scene.predictedTimes[k], v]);
+  const times = scene.trailTimes;
+  const head = scene.trailHead;
+  const slot = (len, k) => (head - len + k + cap) % cap;
+  const { pastPair, futurePair, pastPos, futurePos, pastHead, futureHead } = series;
+  for (const s of Object.values(series)) s.clear();
+  const pairs = scene.trailMinPair;
+  for (let k = 0; k < scene.historyLength; k++) {
+    const i = slot(scene.historyLength, k);
+    if (Number.isFinite(pairs[i])) pastPair.push(times[i], pairs[i]);
   }
-  // The prediction stops once every robot has converged: they stay put from there on.
-  const extend = (series) => {
-    const last = series[series.length - 1];
-    if (last && last[0] < scene.duration) series.push([scene.duration, last[1]]);
-    return series;
-  };
-  extend(futurePair);
+  const n = scene.predictedSamples;
+  for (let k = 0; k < n; k++) {
+    const v = scene.predictedMinPair[k];
+    if (Number.isFinite(v)) futurePair.push(scene.predictedTimes[k], v);
+  }
+  futurePair.extendTo(scene.duration);
   const r = scene.scenario.robots[robot];
-  const err = (x, y, th) => [Math.hypot(x - r.goal[0], y - r.goal[1]), Math.abs(wrap(th - r.goal[2]))];
+  if (!r) return series;
+  const [gx, gy, gth] = r.goal;
   const base = robot * cap * POSE_STRIDE;
   const tr = scene.trails;
   const len = scene.trailLens[robot] ?? 0;
-  const pastPos = ringSeries(scene.trailTimes, scene.trailHead, len, (s) => err(tr[base + s * POSE_STRIDE], tr[base + s * POSE_STRIDE + 1], 0)[0]);
-  const pastHead = ringSeries(scene.trailTimes, scene.trailHead, len,
-    (s) => err(0, 0, tr[base + s * POSE_STRIDE + 2])[1]);
-  const futurePos = [];
-  const futureHead = [];
-  const n = scene.predictedSamples;
+  for (let k = 0; k < len; k++) {
+    const i = slot(len, k);
+    const o = base + i * POSE_STRIDE;
+    if (!Number.isFinite(tr[o])) continue;
+    pastPos.push(times[i], Math.hypot(tr[o] - gx, tr[o + 1] - gy));
+    pastHead.push(times[i], Math.abs(wrap(tr[o + 2] - gth)));
+  }
   const p = scene.predicted;
   for (let k = 0; k < n; k++) {
     const o = (robot * n + k) * POSE_STRIDE;
-    const [e, h] = err(p[o], p[o + 1], p[o + 2]);
-    futurePos.push([scene.predictedTimes[k], e]);
-    futureHead.push([scene.predictedTimes[k], h]);
+    futurePos.push(scene.predictedTimes[k], Math.hypot(p[o] - gx, p[o + 1] - gy));
+    futureHead.push(scene.predictedTimes[k], Math.abs(wrap(p[o + 2] - gth)));
   }
-  extend(futurePos);
-  extend(futureHead);
-  return { pastPair, futurePair, pastPos, futurePos, pastHead, futureHead };
+  futurePos.extendTo(scene.duration);
+  futureHead.extendTo(scene.duration);
+  return series;
 }
 
 /**
  * Draws one plot on `ctx` in the box (x, y, w, h): `lines` is a list of
- * `{points, colour, dashed, axis}` (axis 'left' or 'right'), `hline` an optional
+ * `{points, colour, dashed, axis}` (`points` a series of plotSeries; axis 'left' or 'right'),
+ * `hline` an optional
  * `{value, colour, label}` on the left axis.
  */
 export function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, rightLabel }) {
@@ -83,7 +123,9 @@ export function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLa
   const py0 = y + PLOT_MARGIN_PX.top;
   const py1 = y + h - PLOT_MARGIN_PX.bottom;
   const max = { left: 0, right: 0 };
-  for (const l of lines) for (const [, v] of l.points) max[l.axis] = Math.max(max[l.axis], v);
+  for (const l of lines) {
+    for (let k = 0; k < l.points.count; k++) max[l.axis] = Math.max(max[l.axis], l.points.v[k]);
+  }
   if (hline) max.left = Math.max(max.left, hline.value * 1.5);
   for (const k of ['left', 'right']) max[k] = niceCeil(max[k] || 1);
   const sx = (t) => px0 + ((px1 - px0) * t) / (duration || 1);
@@ -140,9 +182,11 @@ export function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLa
   ctx.rect(px0, py0 - 1, px1 - px0, py1 - py0 + 2);
   ctx.clip();
   for (const l of lines) {
-    if (l.points.length < 1) continue;
+    const { count, t, v } = l.points;
+    if (count < 1) continue;
     ctx.beginPath();
-    l.points.forEach(([t, v], k) => (k ? ctx.lineTo(sx(t), sy(v, l.axis)) : ctx.moveTo(sx(t), sy(v, l.axis))));
+    ctx.moveTo(sx(t[0]), sy(v[0], l.axis));
+    for (let k = 1; k < count; k++) ctx.lineTo(sx(t[k]), sy(v[k], l.axis));
     ctx.setLineDash(l.dashed ? [4, 3] : []);
     ctx.globalAlpha = l.dashed ? 0.6 : 1;
     ctx.lineWidth = 1.5;

@@ -566,36 +566,43 @@ function drawField(ctx, view, field, obstacles, width) {
     max = Math.max(max, Math.hypot(field[k + 2], field[k + 3]));
   }
   if (!(max > 0)) return;
+  const inside = (x, y) => {
+    for (const o of obstacles) if (Math.hypot(x - o.center[0], y - o.center[1]) < o.radius) return true;
+    return false;
+  };
   ctx.strokeStyle = FIELD_COLOUR;
   ctx.fillStyle = FIELD_COLOUR;
   // A hairline: the rasteriser's fast path (see THIN_PREDICTED_ABOVE).
   ctx.lineWidth = width;
-  ctx.beginPath();
-  const heads = [];
-  for (let k = 0; k < field.length; k += FIELD_STRIDE) {
-    const [x, y, gx, gy] = [field[k], field[k + 1], field[k + 2], field[k + 3]];
-    if (obstacles.some((o) => Math.hypot(x - o.center[0], y - o.center[1]) < o.radius)) continue;
-    const m = Math.hypot(gx, gy);
-    if (!(m > 0)) continue;
-    // Length grows with magnitude but saturates, so arrows near the goal stay visible.
-    const len = FIELD_ARROW_PX * (0.35 + 0.65 * Math.sqrt(m / max));
-    const ux = gx / m;
-    const uy = -gy / m; // screen y is down
-    const px = view.sx(x) - (ux * len) / 2;
-    const py = view.sy(y) - (uy * len) / 2;
-    ctx.moveTo(px, py);
-    ctx.lineTo(px + ux * len, py + uy * len);
-    heads.push([px + ux * len, py + uy * len, ux, uy]);
+  // Two passes over the samples, shafts then heads: one path each, nothing kept in between.
+  for (const heads of [false, true]) {
+    ctx.beginPath();
+    for (let k = 0; k < field.length; k += FIELD_STRIDE) {
+      const x = field[k];
+      const y = field[k + 1];
+      const m = Math.hypot(field[k + 2], field[k + 3]);
+      if (!(m > 0) || inside(x, y)) continue;
+      // Length grows with magnitude but saturates, so arrows near the goal stay visible.
+      const len = FIELD_ARROW_PX * (0.35 + 0.65 * Math.sqrt(m / max));
+      const ux = field[k + 2] / m;
+      const uy = -field[k + 3] / m; // screen y is down
+      const px = view.sx(x) - (ux * len) / 2;
+      const py = view.sy(y) - (uy * len) / 2;
+      const hx = px + ux * len;
+      const hy = py + uy * len;
+      if (heads) {
+        ctx.moveTo(hx, hy);
+        ctx.lineTo(hx - ux * 5 - uy * 2.5, hy - uy * 5 + ux * 2.5);
+        ctx.lineTo(hx - ux * 5 + uy * 2.5, hy - uy * 5 - ux * 2.5);
+        ctx.closePath();
+      } else {
+        ctx.moveTo(px, py);
+        ctx.lineTo(hx, hy);
+      }
+    }
+    if (heads) ctx.fill();
+    else ctx.stroke();
   }
-  ctx.stroke();
-  ctx.beginPath();
-  for (const [hx, hy, ux, uy] of heads) {
-    ctx.moveTo(hx, hy);
-    ctx.lineTo(hx - ux * 5 - uy * 2.5, hy - uy * 5 + ux * 2.5);
-    ctx.lineTo(hx - ux * 5 + uy * 2.5, hy - uy * 5 - ux * 2.5);
-    ctx.closePath();
-  }
-  ctx.fill();
 }
 
 /** Integral curves of the goal field, each from its start (dot) on. */
