@@ -15,6 +15,9 @@
 
 use glam::DVec2;
 
+/// Up to this many robots, [`Neighbours::build`] scans all pairs instead of building cells.
+const SCAN_MAX: usize = 32;
+
 /// Cells are this much wider than the reach, so that rounding in `x / cell` cannot put two
 /// robots within reach more than one cell apart (see [`MAX_CELL_COORDINATE`]).
 const CELL_MARGIN: f64 = 1e-6;
@@ -67,6 +70,24 @@ impl Neighbours {
     /// A non-finite position is nobody's neighbour (its distance is not `≤ reach`), as in a
     /// scan over all pairs.
     pub fn build(&mut self, positions: impl Fn(usize) -> DVec2, n: usize, reach: f64) {
+        if n <= SCAN_MAX {
+            // A few robots: the scan over all pairs costs less than the cells (the paper's
+            // examples have ten), and it is the definition the lists meet.
+            let reach2 = reach * reach;
+            self.first.clear();
+            self.list.clear();
+            for i in 0..n {
+                self.first.push(self.list.len() as u32);
+                let p = positions(i);
+                for j in 0..n {
+                    if j != i && positions(j).distance_squared(p) <= reach2 {
+                        self.list.push(j as u32);
+                    }
+                }
+            }
+            self.first.push(self.list.len() as u32);
+            return;
+        }
         let far = (0..n)
             .map(&positions)
             .filter(|p| p.is_finite())
@@ -245,6 +266,9 @@ impl Neighbours {
     }
 }
 
+/// Up to this many obstacles, [`ObstacleCells`] lists them all for every point.
+pub const FEW_OBSTACLES: usize = 8;
+
 /// An obstacle whose grown disc would cover more cells than this is listed for every point
 /// instead ([`ObstacleCells`]): a few huge obstacles cost a check per robot, not memory.
 const MAX_OBSTACLE_CELLS: i64 = 1_024;
@@ -269,9 +293,13 @@ pub struct ObstacleCells {
 }
 
 impl ObstacleCells {
-    /// The cells for `obstacles` and a `reach` (scenario units).
+    /// The cells for `obstacles` and a `reach` (scenario units). Up to [`FEW_OBSTACLES`]
+    /// obstacles are all listed everywhere: testing them costs less than finding a cell.
     #[must_use]
     pub fn build(obstacles: &[crate::Obstacle], reach: f64) -> Self {
+        if obstacles.len() <= FEW_OBSTACLES {
+            return Self::all(obstacles.len());
+        }
         let far = obstacles
             .iter()
             .map(|o| o.center.abs().max_element() + o.radius)
@@ -392,6 +420,11 @@ impl Iterator for Candidates<'_> {
     type Item = usize;
 
     fn next(&mut self) -> Option<usize> {
+        if self.cells.is_empty() {
+            let (&k, rest) = self.everywhere.split_first()?;
+            self.everywhere = rest;
+            return Some(k as usize);
+        }
         let (a, b) = (self.cells.first(), self.everywhere.first());
         let take_cells = match (a, b) {
             (Some(x), Some(y)) => x < y,
@@ -532,6 +565,17 @@ mod tests {
         check(&points, 0.0);
         check(&[], 1.0);
         check(&[DVec2::ZERO], 1.0);
+        // The same cases in rows far apart: more robots than the scan takes, so the cells.
+        let rows: Vec<DVec2> = (0..4)
+            .flat_map(|r| {
+                points
+                    .iter()
+                    .map(move |p| *p + DVec2::new(0.0, 100.0 * r as f64))
+            })
+            .collect();
+        assert!(rows.len() > SCAN_MAX);
+        check(&rows, 2.0);
+        check(&rows, 0.0);
     }
 
     /// The closest pair below a limit and the smallest distance are those of the scan over
