@@ -518,6 +518,7 @@ fn floor(x: f64) -> i64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::xorshift::XorShift;
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
@@ -536,14 +537,8 @@ mod tests {
 
     #[test]
     fn lists_equal_the_scan_over_all_pairs() {
-        // xorshift64*: enough for a test that needs no statistics.
-        let mut s = 0x9E37_79B9_7F4A_7C15_u64;
-        let mut next = || {
-            s ^= s >> 12;
-            s ^= s << 25;
-            s ^= s >> 27;
-            (s.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = XorShift(0x9E37_79B9_7F4A_7C15_u64);
+        let mut next = move || rng.unit();
         for (n, side, reach) in [
             (300, 100.0, 7.0),
             (50, 1e6, 3.0),
@@ -582,13 +577,8 @@ mod tests {
     /// all pairs (same pair, same bits), on random points of several densities.
     #[test]
     fn pair_queries_equal_the_scan() {
-        let mut s = 0x2545_F491_4F6C_DD1D_u64;
-        let mut next = || {
-            s ^= s >> 12;
-            s ^= s << 25;
-            s ^= s >> 27;
-            (s.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = XorShift(0x2545_F491_4F6C_DD1D_u64);
+        let mut next = move || rng.unit();
         let mut search = Neighbours::new();
         for (n, side) in [(2, 10.0), (40, 10.0), (300, 100.0), (500, 1e5), (60, 1e7)] {
             let points: Vec<DVec2> = (0..n)
@@ -630,13 +620,8 @@ mod tests {
     #[test]
     fn obstacle_cells_cover_the_reach() {
         use crate::Obstacle;
-        let mut s = 0x1234_5678_9ABC_DEF1_u64;
-        let mut next = || {
-            s ^= s >> 12;
-            s ^= s << 25;
-            s ^= s >> 27;
-            (s.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = XorShift(0x1234_5678_9ABC_DEF1_u64);
+        let mut next = move || rng.unit();
         for (m, side, reach, rmax) in [
             (40, 200.0, 20.0, 8.0),
             (200, 1_000.0, 5.0, 3.0),

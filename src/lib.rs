@@ -19,6 +19,8 @@ pub mod swarm;
 pub mod sweep;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
+#[doc(hidden)]
+pub mod xorshift;
 
 pub use controller::{command, Command};
 pub use error::Error;

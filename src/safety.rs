@@ -267,6 +267,7 @@ mod tests {
     use crate::approx::assert_close;
     use crate::se2::heading;
     use crate::sim::integrate;
+    use crate::xorshift::XorShift;
     #[cfg(target_arch = "wasm32")]
     use wasm_bindgen_test::wasm_bindgen_test as test;
 
@@ -274,13 +275,8 @@ mod tests {
     /// The constraints derived once give the same bits as deriving them for each direction.
     #[test]
     fn filter_with_equals_filter() {
-        let mut s = 0x2545_F491_4F6C_DD1D_u64;
-        let mut next = || {
-            s ^= s >> 12;
-            s ^= s << 25;
-            s ^= s >> 27;
-            (s.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut rng = XorShift(0x2545_F491_4F6C_DD1D_u64);
+        let mut next = move || rng.unit() * 2.0 - 1.0;
         let params = Params::default();
         let mut constraints = Constraints::new();
         for _ in 0..500 {
@@ -385,14 +381,8 @@ mod tests {
     /// when both reverse and turn fast, and zero speed is always allowed.
     #[test]
     fn any_commands_keep_any_pair_apart() {
-        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = move || {
-            // xorshift64*: enough for a test that needs no statistics.
-            seed ^= seed >> 12;
-            seed ^= seed << 25;
-            seed ^= seed >> 27;
-            (seed.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = XorShift(0x2545_f491_4f6c_dd1d_u64);
+        let mut next = move || rng.unit();
         let (dt, a, ds) = (0.02, 0.5, 2.0);
         let p = Params {
             barrier_rate: Some(a / dt),

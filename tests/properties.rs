@@ -7,6 +7,7 @@ use dvf::params::Params;
 use dvf::scenario::{RobotSpec, Scenario};
 use dvf::se2::{exp, log, phi, Pose};
 use dvf::sim::Simulation;
+use dvf::xorshift::XorShift;
 use dvf::Obstacle;
 use glam::DVec2;
 use proptest::prelude::*;
@@ -18,31 +19,6 @@ use std::f64::consts::PI;
 /// defaults does not silently loosen this test).
 const TOL_POSITION: f64 = 0.05;
 const TOL_HEADING: f64 = 0.02;
-
-/// xorshift64* (Vigna): a tiny deterministic generator, so the statistics below are the same
-/// on every run and platform.
-struct XorShift(u64);
-
-impl XorShift {
-    fn next_u64(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    /// Uniform in [0, 1).
-    fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    /// Uniform in [lo, hi).
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-    /// Uniform in (−π, π].
-    fn heading(&mut self) -> f64 {
-        PI - 2.0 * PI * self.unit()
-    }
-}
 
 fn is_finite_pose(p: Pose) -> bool {
     p.p.is_finite() && p.theta.is_finite()

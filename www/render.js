@@ -661,9 +661,18 @@ function drawVirtualObstacles(ctx, view, scene) {
     const y = view.sy(st[k + 5]);
     if (!seen(x, y)) drawn.push([x, y]);
   }
-  if (!drawn.length) return;
+  if (drawn.length) drawVirtualObstacleGlyphs(ctx, drawn, rc);
+}
+
+/** One virtual obstacle glyph at (x, y) with ring radius `rc` (CSS px). */
+export function drawVirtualObstacle(ctx, x, y, rc) {
+  drawVirtualObstacleGlyphs(ctx, [[x, y]], rc);
+}
+
+/** Virtual obstacle glyphs at screen `points` ([x, y] each): the rings R_c, then the crosses. */
+function drawVirtualObstacleGlyphs(ctx, points, rc) {
   ctx.beginPath();
-  for (const [x, y] of drawn) {
+  for (const [x, y] of points) {
     ctx.moveTo(x + rc, y);
     ctx.arc(x, y, rc, 0, 2 * Math.PI);
   }
@@ -671,29 +680,12 @@ function drawVirtualObstacles(ctx, view, scene) {
   strokeDashed(ctx, [4, 3], 1.25, VIRTUAL_OBSTACLE_COLOUR);
   ctx.globalAlpha = 1;
   ctx.beginPath();
-  for (const [x, y] of drawn) {
+  for (const [x, y] of points) {
     ctx.moveTo(x - 4, y - 4);
     ctx.lineTo(x + 4, y + 4);
     ctx.moveTo(x + 4, y - 4);
     ctx.lineTo(x - 4, y + 4);
   }
-  ctx.lineWidth = 2;
-  ctx.strokeStyle = VIRTUAL_OBSTACLE_COLOUR;
-  ctx.stroke();
-}
-
-/** One virtual obstacle glyph at (x, y) with ring radius `rc` (CSS px). */
-export function drawVirtualObstacle(ctx, x, y, rc) {
-  ctx.beginPath();
-  ctx.arc(x, y, rc, 0, 2 * Math.PI);
-  ctx.globalAlpha = 0.7;
-  strokeDashed(ctx, [4, 3], 1.25, VIRTUAL_OBSTACLE_COLOUR);
-  ctx.globalAlpha = 1;
-  ctx.beginPath();
-  ctx.moveTo(x - 4, y - 4);
-  ctx.lineTo(x + 4, y + 4);
-  ctx.moveTo(x + 4, y - 4);
-  ctx.lineTo(x - 4, y + 4);
   ctx.lineWidth = 2;
   ctx.strokeStyle = VIRTUAL_OBSTACLE_COLOUR;
   ctx.stroke();
