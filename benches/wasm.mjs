@@ -1,12 +1,12 @@
 // The wasm build's counterpart of `dvf bench`: times the crowd scenario in Node and prints
 // {"robots": N, "steps": S, "obstacles": M, "ms_per_step": x}.
 //
-//   make build-wasm && node www/bench.mjs --robots 1000 --steps 100 [--obstacles 0]
+//   make build-wasm && node benches/wasm.mjs --robots 1000 --steps 100 [--obstacles 0]
 
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
-import init, { CrowdBench } from './pkg/dvf.js';
+import init, { CrowdBench } from '../www/pkg/dvf.js';
 
 /** The value after `--name`, as a whole number, or `fallback`. */
 function option(name, fallback) {
@@ -24,7 +24,7 @@ const robots = option('robots', 1000);
 const steps = option('steps', 100);
 const obstacles = option('obstacles', 0);
 
-const wasmPath = fileURLToPath(new URL('./pkg/dvf_bg.wasm', import.meta.url));
+const wasmPath = fileURLToPath(new URL('../www/pkg/dvf_bg.wasm', import.meta.url));
 await init({ module_or_path: readFileSync(wasmPath) });
 
 let bench;
