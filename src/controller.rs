@@ -228,11 +228,9 @@ pub fn saturate(params: &Params, c: Command) -> Command {
 #[cfg(test)]
 mod tests {
     use super::*;
-    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
     use crate::se2::log;
     use std::f64::consts::{FRAC_PI_2, PI};
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::test;
 
     #[test]
     fn atan_ratio_limits() {

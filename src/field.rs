@@ -106,11 +106,9 @@ pub fn integral_curve(start: Pose, goal: Pose, dt: f64, steps: usize) -> Vec<DVe
 #[cfg(test)]
 mod tests {
     use super::*;
-    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
-    use crate::approx::assert_close;
+    use crate::testing::assert_close;
     use std::f64::consts::{FRAC_PI_2, PI};
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::test;
 
     #[test]
     fn field_vanishes_exactly_at_the_goal_position() {

@@ -185,10 +185,8 @@ pub fn goal_first(clearance: f64, to_goal: f64, eps: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
-    use crate::approx::assert_close;
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::assert_close;
+    use crate::testing::test;
 
     #[test]
     fn transition_limits_and_continuity() {

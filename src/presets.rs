@@ -317,9 +317,7 @@ fn example4() -> Scenario {
 #[cfg(test)]
 mod tests {
     use super::*;
-    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::test;
 
     /// Neighbouring starts stay `CROWD_SPACING·r_ij` apart whatever the crowd's size, and the
     /// scenario is valid.
@@ -328,7 +326,7 @@ mod tests {
         for n in [2, 3, 10, 1000, CROWD_MAX] {
             let s = crowd(n);
             let (a, b) = (s.robots[0].start_pose().p, s.robots[1].start_pose().p);
-            crate::approx::assert_close!(a.distance(b), CROWD_SPACING, 1e-9);
+            crate::testing::assert_close!(a.distance(b), CROWD_SPACING, 1e-9);
             assert_eq!(s.robots.len(), n);
             if n <= 1000 {
                 s.validate().unwrap();

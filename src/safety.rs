@@ -28,7 +28,7 @@ use crate::controller::Command;
 use crate::obstacle::Obstacle;
 use crate::params::Params;
 use crate::se2::Pose;
-use crate::sim::chord;
+use crate::unicycle::chord;
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
 
@@ -126,7 +126,8 @@ fn constraints<'a>(
 
 /// The command `c` of a robot at `pose` whose field is `field` (world frame), made safe: its
 /// speed clamped by the barrier (see [`speed_limits`]), with `a = barrier_rate·dt` and the
-/// safe distance `2·r_ij` of `params`. Without a barrier rate the command is returned as it is.
+/// safe distance `2·r_ij` of `params`. The barrier's constraints are derived once into
+/// `constraints` (a buffer reused from robot to robot) for the two directions it asks about. Without a barrier rate the command is returned as it is.
 ///
 /// A robot whose field leads into a barrier also turns left (counter-clockwise) by
 /// `k_a·h·π/2`, where `h ∈ [0, 1]` is the part of the speed `min(k_v|Γ|, v_c)` that the
@@ -138,46 +139,8 @@ fn constraints<'a>(
 /// turn, so a robot merely facing a blocker turns to its field as usual. The speed is clamped
 /// again for the final turn rate, so the returned command keeps the barrier exactly.
 #[must_use]
-pub fn filter<'a, N, O>(
-    params: &Params,
-    dt: f64,
-    pose: Pose,
-    c: Command,
-    field: DVec2,
-    neighbours: N,
-    obstacles: O,
-) -> Command
-where
-    N: IntoIterator<Item = DVec2>,
-    N::IntoIter: Clone,
-    O: IntoIterator<Item = &'a Obstacle>,
-    O::IntoIter: Clone,
-{
-    let Some(rate) = params.barrier_rate else {
-        return c;
-    };
-    let (neighbours, obstacles) = (neighbours.into_iter(), obstacles.into_iter());
-    let a = rate * dt;
-    let safe = 2.0 * params.safe_radius;
-    steer(params, dt, pose, c, field, |direction| {
-        speed_limits(
-            pose.p,
-            direction,
-            dt,
-            a,
-            safe,
-            neighbours.clone(),
-            obstacles.clone(),
-        )
-    })
-}
-
-/// [`filter`] with the barrier's constraints derived once into `constraints` (a buffer reused
-/// from robot to robot) rather than once for each of the two directions it asks about. The
-/// same arithmetic in the same order: the same bits as [`filter`].
-#[must_use]
 #[allow(clippy::too_many_arguments)]
-pub fn filter_with<'a>(
+pub fn filter<'a>(
     constraints: &mut Constraints,
     params: &Params,
     dt: f64,
@@ -199,7 +162,7 @@ pub fn filter_with<'a>(
 
 /// The barrier's constraints on one robot: for each neighbour and obstacle, the unit vector
 /// `u` away from it and the approach `budget` allowed per step, as [`speed_limits`] derives
-/// them. They do not depend on the direction of the step, so [`filter_with`] derives them once.
+/// them. They do not depend on the direction of the step, so [`filter`] derives them once.
 #[derive(Clone, Debug, Default)]
 pub struct Constraints {
     items: Vec<(DVec2, f64)>,
@@ -264,28 +227,20 @@ fn steer(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::approx::assert_close;
     use crate::se2::heading;
-    use crate::sim::integrate;
-    use crate::xorshift::XorShift;
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::{assert_close, test, XorShift};
+    use crate::unicycle::integrate;
 
-    /// The chord agrees with the exact arc of the simulator.
-    /// The constraints derived once give the same bits as deriving them for each direction.
+    /// The constraints derived once give the same bits as deriving them for each direction
+    /// ([`speed_limits`], the definition).
     #[test]
-    fn filter_with_equals_filter() {
+    fn constraints_derived_once_equal_the_limits_of_each_direction() {
         let mut rng = XorShift(0x2545_F491_4F6C_DD1D_u64);
         let mut next = move || rng.unit() * 2.0 - 1.0;
-        let params = Params::default();
+        let (dt, a, safe) = (0.01, 0.05, 2.0);
         let mut constraints = Constraints::new();
         for _ in 0..500 {
-            let pose = Pose::new(next() * 5.0, next() * 5.0, next() * 3.0);
-            let c = Command {
-                v: next() * 30.0,
-                omega: next() * 5.0,
-            };
-            let field = DVec2::new(next() * 10.0, next() * 10.0);
+            let p = DVec2::new(next() * 5.0, next() * 5.0);
             let neighbours: Vec<DVec2> = (0..4)
                 .map(|_| DVec2::new(next() * 8.0, next() * 8.0))
                 .collect();
@@ -294,38 +249,22 @@ mod tests {
                 radius: 1.0,
                 influence: 2.0,
             }];
-            let a = filter(
-                &params,
-                0.01,
-                pose,
-                c,
-                field,
-                neighbours.iter().copied(),
-                &obstacles,
-            );
-            let b = filter_with(
-                &mut constraints,
-                &params,
-                0.01,
-                pose,
-                c,
-                field,
-                neighbours.iter().copied(),
-                &obstacles,
-            );
-            assert_eq!(a.v.to_bits(), b.v.to_bits());
-            assert_eq!(a.omega.to_bits(), b.omega.to_bits());
-        }
-    }
-
-    #[test]
-    fn chord_is_the_step_of_the_arc() {
-        for (theta, omega) in [(0.3, 0.0), (-2.0, 7.0), (3.0, -40.0)] {
-            let pose = Pose::new(1.0, -2.0, theta);
-            let next = integrate(pose, Command { v: 3.0, omega }, 0.05);
-            let step = 3.0 * 0.05 * chord(theta, omega, 0.05);
-            // Both are closed forms of the same arc: round-off only.
-            assert_close!((next.p - pose.p - step).length(), 0.0, 1e-14);
+            constraints.derive(p, a, safe, neighbours.iter().copied(), &obstacles);
+            for _ in 0..2 {
+                let direction = chord(next() * 3.0, next() * 5.0, dt);
+                let once = constraints.limits(direction, dt);
+                let each = speed_limits(
+                    p,
+                    direction,
+                    dt,
+                    a,
+                    safe,
+                    neighbours.iter().copied(),
+                    &obstacles,
+                );
+                assert_eq!(once.lo.to_bits(), each.lo.to_bits());
+                assert_eq!(once.hi.to_bits(), each.hi.to_bits());
+            }
         }
     }
 
@@ -348,8 +287,8 @@ mod tests {
         let mut closest = f64::INFINITY;
         for _ in 0..200 {
             // Both commands from the same snapshot, as in the simulator.
-            let ci = filter(&p, dt, pi, wild, heading(pi.theta), [pj.p], []);
-            let cj = filter(&p, dt, pj, wild, heading(pj.theta), [pi.p], []);
+            let ci = filter(&mut Constraints::new(), &p, dt, pi, wild, heading(pi.theta), [pj.p], []);
+            let cj = filter(&mut Constraints::new(), &p, dt, pj, wild, heading(pj.theta), [pi.p], []);
             pi = integrate(pi, ci, dt);
             pj = integrate(pj, cj, dt);
             closest = closest.min(pi.p.distance(pj.p));
@@ -369,7 +308,7 @@ mod tests {
         let mut r = Pose::new(-5.0, 0.0, 0.0);
         let mut closest = f64::INFINITY;
         for _ in 0..200 {
-            let c = filter(&p, dt, r, wild, heading(r.theta), [], [&disc]);
+            let c = filter(&mut Constraints::new(), &p, dt, r, wild, heading(r.theta), [], [&disc]);
             r = integrate(r, c, dt);
             closest = closest.min(disc.clearance(r.p));
             assert!(disc.clearance(r.p) >= 0.0);
@@ -405,8 +344,8 @@ mod tests {
                 let li = speed_limits(pi.p, chord(pi.theta, ci.omega, dt), dt, a, ds, [pj.p], []);
                 assert!(li.lo <= 0.0 && li.hi >= 0.0);
                 let (fi, fj) = (
-                    filter(&p, dt, pi, ci, DVec2::ZERO, [pj.p], []),
-                    filter(&p, dt, pj, cj, DVec2::ZERO, [pi.p], []),
+                    filter(&mut Constraints::new(), &p, dt, pi, ci, DVec2::ZERO, [pj.p], []),
+                    filter(&mut Constraints::new(), &p, dt, pj, cj, DVec2::ZERO, [pi.p], []),
                 );
                 pi = integrate(pi, fi, dt);
                 pj = integrate(pj, fj, dt);

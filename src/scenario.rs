@@ -392,9 +392,7 @@ fn positive(field: &str, v: f64) -> Result<(), Error> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::test;
 
     fn err(text: &str) -> String {
         Scenario::from_json(text).unwrap_err().to_string()

@@ -244,10 +244,8 @@ pub fn continue_branch(prev: f64, theta: f64, goal_theta: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
-    use crate::approx::assert_close;
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::assert_close;
+    use crate::testing::test;
 
     /// 3×3 homogeneous matrix of a pose (eq. `eq_confi_matrix`).
     fn matrix(h: Pose) -> [[f64; 3]; 3] {

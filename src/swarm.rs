@@ -235,11 +235,9 @@ pub fn tangent_field(p_i: DVec2, theta: f64, p_o: DVec2, side: Option<DVec2>) ->
 #[cfg(test)]
 mod tests {
     use super::*;
-    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
-    use crate::approx::assert_close;
+    use crate::testing::assert_close;
     use std::f64::consts::{FRAC_PI_2, PI};
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::test;
 
     fn at(x: f64, y: f64) -> Neighbour {
         Neighbour {

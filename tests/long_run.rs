@@ -1,4 +1,4 @@
-//! Long runs with the page's buffers ([`dvf::live::Live`]): the trails are rings, so memory
+//! Long runs with the page's buffers ([`dvf::playground::Live`]): the trails are rings, so memory
 //! does not grow with the run; nothing turns non-finite; and the metrics do not drift (the
 //! clock is `steps · dt`, not a running sum, and robots that arrived stay arrived).
 //!
@@ -6,7 +6,7 @@
 //! long_run` runs the full million and prints the process's memory as it goes.
 #![cfg(not(target_arch = "wasm32"))]
 
-use dvf::live::{Live, TRAIL_CAPACITY};
+use dvf::playground::{Live, TRAIL_CAPACITY};
 use dvf::presets::preset;
 
 const STEPS: usize = 100_000;

@@ -7,7 +7,9 @@ use dvf::params::Params;
 use dvf::scenario::{RobotSpec, Scenario};
 use dvf::se2::{exp, log, phi, Pose};
 use dvf::sim::Simulation;
-use dvf::xorshift::XorShift;
+#[path = "../src/testing.rs"]
+mod testing;
+use testing::XorShift;
 use dvf::Obstacle;
 use glam::DVec2;
 use proptest::prelude::*;

@@ -2,7 +2,7 @@
 //! `wasm-pack test --headless --chrome -- --test web_facade`.
 #![cfg(target_arch = "wasm32")]
 
-use dvf::live::{CURVE_POINTS, MAX_LIVE_ROBOTS, MAX_PREDICTED_ROBOTS, TRAIL_CAPACITY};
+use dvf::playground::{CURVE_POINTS, MAX_LIVE_ROBOTS, MAX_PREDICTED_ROBOTS, TRAIL_CAPACITY};
 use dvf::presets::{DEFAULT_PRESET, PRESETS};
 use dvf::wasm::{
     default_preset, playground_limits, preset_scenario, presets, Playground, Run, FIELD_STRIDE,

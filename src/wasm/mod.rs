@@ -11,7 +11,7 @@
 //! page (its layouts are documented on it).
 
 use crate::error::Error;
-use crate::live::{self, Live};
+use crate::playground::{self, Live};
 use crate::presets::{self, PRESETS};
 use crate::scenario::Scenario;
 use crate::se2::Pose;
@@ -281,7 +281,7 @@ impl CrowdBench {
 }
 
 /// The live simulation behind `<dvf-playground>`: edits apply at once and re-predict (see
-/// [`crate::live`] for what an edit means at `t > 0`).
+/// [`crate::playground`] for what an edit means at `t > 0`).
 ///
 /// Flat array layouts (all `Float64Array`, robots in scenario order, lengths in brackets):
 /// - [`poses`](Playground::poses) `[robots · 3]`: `x, y, θ` now (m, m, rad in `(−π, π]`).

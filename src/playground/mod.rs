@@ -876,13 +876,11 @@ fn all_converged(sim: &Simulation) -> bool {
 mod tests {
     use super::*;
     use crate::controller::evaluate;
-    // The same tests run natively and in Chromium (`wasm-pack test --headless --chrome`).
-    use crate::approx::assert_close;
+    use crate::testing::assert_close;
     use crate::presets::{preset, DEFAULT_PRESET};
     use crate::scenario::RobotSpec;
     use std::f64::consts::FRAC_PI_2;
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::test;
 
     fn two() -> Scenario {
         Scenario::from_json(

@@ -518,9 +518,8 @@ fn floor(x: f64) -> i64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::xorshift::XorShift;
-    #[cfg(target_arch = "wasm32")]
-    use wasm_bindgen_test::wasm_bindgen_test as test;
+    use crate::testing::XorShift;
+    use crate::testing::test;
 
     /// Every list equals the scan over all robots, in the same (ascending) order.
     fn check(points: &[DVec2], reach: f64) {

@@ -1,0 +1,166 @@
+//! The metrics of the paper's figures, observed after every step: since when each robot has been
+//! at its goal, the smallest distance between two robots and from a robot to an obstacle, and
+//! the violation events (a pair closer than `2·r_ij`, a robot inside an obstacle disc; one
+//! event for as long as it lasts). Planner-independent: they read poses and the neighbourhood
+//! structures only.
+
+use super::{Neighbourhood, Robot};
+use crate::grid::{Neighbours, ObstacleCells};
+use crate::obstacle::Obstacle;
+use crate::params::Params;
+
+/// The running metrics of a [`super::Simulation`].
+#[derive(Clone, Debug)]
+pub(super) struct Metrics {
+    pub(super) inside_since: Vec<Option<f64>>,
+    pub(super) min_pair: Option<f64>,
+    pub(super) min_clearance: Option<f64>,
+    pub(super) violations: usize,
+    // The pairs `(i, j)`, `i < j`, closer than `2·r_ij`, ascending; `pair_scratch` receives the
+    // current step's before the two are swapped.
+    pair_violating: Vec<(u32, u32)>,
+    pair_scratch: Vec<(u32, u32)>,
+    // The pairs `(robot, obstacle)` with the robot inside the disc, ascending, and the
+    // current step's.
+    obstacle_violating: Vec<(u32, u32)>,
+    obstacle_scratch: Vec<(u32, u32)>,
+}
+
+/// What the metrics observe: the state after a step, and the structures that find what is
+/// near each robot.
+pub(super) struct Observed<'a> {
+    pub time: f64,
+    pub params: &'a Params,
+    pub independent: bool,
+    pub robots: &'a [Robot],
+    pub obstacles: &'a [Obstacle],
+    pub obstacle_cells: &'a ObstacleCells,
+    pub neighbourhood: Neighbourhood,
+    /// The robots within `reach` of each robot (built for this state when the neighbourhood
+    /// is [`Neighbourhood::Grid`]).
+    pub near: &'a Neighbours,
+    /// `max(R_s, 2·r_ij)`.
+    pub reach: f64,
+}
+
+impl Metrics {
+    /// Nothing observed yet, for `n` robots.
+    pub(super) fn new(n: usize) -> Self {
+        Self {
+            inside_since: vec![None; n],
+            min_pair: None,
+            min_clearance: None,
+            violations: 0,
+            // Room for a violating pair per robot: a violation allocates nothing.
+            pair_violating: Vec::with_capacity(n),
+            pair_scratch: Vec::with_capacity(n),
+            obstacle_violating: Vec::with_capacity(n),
+            obstacle_scratch: Vec::with_capacity(n),
+        }
+    }
+
+    /// Back to nothing observed, keeping the buffers.
+    pub(super) fn clear(&mut self) {
+        self.inside_since.fill(None);
+        self.min_pair = None;
+        self.min_clearance = None;
+        self.violations = 0;
+        self.pair_violating.clear();
+        self.obstacle_violating.clear();
+    }
+
+    /// Updates the metrics from the state `o`.
+    pub(super) fn observe(&mut self, o: &Observed<'_>) {
+        let p = o.params;
+        let reach = o.reach;
+        self.obstacle_scratch.clear();
+        for (i, r) in o.robots.iter().enumerate() {
+            let inside =
+                r.position_error() <= p.tol_position && r.heading_error_abs() <= p.tol_heading;
+            match (inside, self.inside_since[i]) {
+                (true, None) => self.inside_since[i] = Some(o.time),
+                (false, Some(_)) => self.inside_since[i] = None,
+                _ => {}
+            }
+            // The obstacles within the reach, as the robot senses them: the clearance metric
+            // and the violations (a robot inside a disc is within every reach).
+            for k in o.obstacle_cells.near(r.pose.p) {
+                let c = o.obstacles[k].clearance(r.pose.p);
+                if c <= reach {
+                    self.min_clearance = Some(self.min_clearance.map_or(c, |m: f64| m.min(c)));
+                }
+                if c < 0.0 {
+                    self.obstacle_scratch.push((i as u32, k as u32));
+                }
+            }
+        }
+        self.violations += new_events(&self.obstacle_violating, &self.obstacle_scratch);
+        std::mem::swap(&mut self.obstacle_violating, &mut self.obstacle_scratch);
+        if o.independent {
+            return;
+        }
+        let safe = 2.0 * p.safe_radius;
+        let robots = o.robots;
+        let n = robots.len();
+        self.pair_scratch.clear();
+        // The pairs in ascending (i, j), as a scan over all pairs visits them.
+        let scratch = &mut self.pair_scratch;
+        let mut pair = |i: usize, j: usize, min: &mut Option<f64>| {
+            let d = robots[i].pose.p.distance(robots[j].pose.p);
+            *min = Some(min.map_or(d, |m: f64| m.min(d)));
+            if d < safe {
+                scratch.push((i as u32, j as u32));
+            }
+        };
+        let mut min = None;
+        match o.neighbourhood {
+            Neighbourhood::AllPairs => {
+                for i in 0..n {
+                    for j in i + 1..n {
+                        pair(i, j, &mut min);
+                    }
+                }
+            }
+            Neighbourhood::Grid => {
+                // Every pair closer than `2·r_ij` is in the lists (the reach is at least that),
+                // and so is the closest pair whenever some pair is within the reach.
+                for i in 0..n {
+                    for &j in o.near.of(i) {
+                        if j as usize > i {
+                            pair(i, j as usize, &mut min);
+                        }
+                    }
+                }
+                // No pair within the reach: the closest pair matters only while no closer one
+                // has been seen, which a swarm at bounded density leaves behind at once.
+                if min.is_none() && self.min_pair.map_or(true, |m| m > reach) {
+                    for i in 0..n {
+                        for j in i + 1..n {
+                            let d = robots[i].pose.p.distance(robots[j].pose.p);
+                            min = Some(min.map_or(d, |m: f64| m.min(d)));
+                        }
+                    }
+                }
+            }
+        }
+        if let Some(d) = min {
+            self.min_pair = Some(self.min_pair.map_or(d, |m: f64| m.min(d)));
+        }
+        self.violations += new_events(&self.pair_violating, &self.pair_scratch);
+        std::mem::swap(&mut self.pair_violating, &mut self.pair_scratch);
+    }
+}
+
+/// Violation events: the pairs violating `now` that were not at the last observation (`was`;
+/// both lists ascending: a merge).
+fn new_events(was: &[(u32, u32)], now: &[(u32, u32)]) -> usize {
+    let mut was = was.iter().peekable();
+    let mut events = 0;
+    for pair in now {
+        while was.next_if(|w| *w < pair).is_some() {}
+        if was.next_if(|w| *w == pair).is_none() {
+            events += 1;
+        }
+    }
+    events
+}

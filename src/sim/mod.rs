@@ -1,0 +1,536 @@
+//! The simulation: N unicycles ([`crate::unicycle`]) under the DVF controller, a fixed step,
+//! deterministic, with the metrics of the paper's figures ([`metrics`]) and its report
+//! ([`report`]); [`run`] runs a scenario to its end.
+//!
+//! Each robot's `(v, ω)` is computed from the state at the start of a step (all robots from the
+//! same snapshot) and held over the step, and the unicycle is integrated in closed form over it
+//! ([`crate::unicycle::integrate`]). A digital controller does exactly this, so there is no
+//! integration error to tune away; RK4 would instead re-evaluate the controller inside the
+//! step, which no real robot does. The same input gives the same bits on the same platform:
+//! there is no randomness, no parallelism and no iteration over hashed containers.
+//!
+//! # Where a planner enters
+//! The loop (integrate, find neighbours, evaluate, observe) and the metrics know nothing of the
+//! method but [`Simulation::evaluate_robot`], which asks the DVF controller
+//! ([`crate::controller::evaluate`]) and the safety barrier ([`crate::safety::filter`]) for one
+//! robot's command from what it senses. A baseline planner (ORCA, a unicycle CLF controller
+//! with the barrier, the dipole field) would be a module beside `controller` and a branch
+//! there, sharing the scenario, this loop, [`crate::grid`]'s neighbourhoods, the metrics and
+//! the report.
+
+mod metrics;
+pub mod report;
+pub mod run;
+
+pub use report::{Report, RobotReport};
+pub use run::{run, run_recorded, run_with, Sample};
+
+use crate::controller::{evaluate, Evaluation};
+use crate::grid::{Neighbours, ObstacleCells};
+use crate::obstacle::Obstacle;
+use crate::params::Params;
+use crate::safety;
+use crate::scenario::Scenario;
+use crate::se2::{continue_branch, wrap_angle, Pose};
+use crate::swarm::Neighbour;
+use crate::unicycle::integrate;
+use crate::Command;
+use glam::DVec2;
+use metrics::{Metrics, Observed};
+
+/// A robot's state in the simulation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Robot {
+    /// Current pose, heading in `(−π, π]`.
+    pub pose: Pose,
+    /// Goal pose.
+    pub goal: Pose,
+    /// Heading error `θ̃`, continued along the trajectory (see [`continue_branch`]).
+    pub heading_error: f64,
+    /// The controller's last evaluation (the command held over the current step).
+    pub last: Evaluation,
+}
+
+impl Robot {
+    /// A robot at rest at `pose` (wrapped) bound for `goal` (wrapped), its heading error on the
+    /// principal branch.
+    #[must_use]
+    pub fn at(pose: Pose, goal: Pose) -> Self {
+        let (pose, goal) = (pose.wrapped(), goal.wrapped());
+        Self {
+            pose,
+            goal,
+            heading_error: wrap_angle(pose.theta - goal.theta),
+            last: Evaluation::default(),
+        }
+    }
+    /// Distance to the goal position.
+    #[must_use]
+    pub fn position_error(&self) -> f64 {
+        self.pose.p.distance(self.goal.p)
+    }
+    /// `|wrap(θ − θ_d)|` (rad).
+    #[must_use]
+    pub fn heading_error_abs(&self) -> f64 {
+        wrap_angle(self.pose.theta - self.goal.theta).abs()
+    }
+}
+
+/// How a [`Simulation`] finds the robots near each robot (the sensed set of eq.
+/// `eq_nonholo_controller_co_avoid` and the pairs of the safety metrics). Both give the same
+/// bits; they differ in cost only.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Neighbourhood {
+    /// A uniform grid ([`crate::grid`]): O(N) per step at bounded density.
+    #[default]
+    Grid,
+    /// Every pair, O(N²) per step: the reference the grid is tested against.
+    AllPairs,
+}
+
+/// A running simulation.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    name: String,
+    params: Params,
+    dt: f64,
+    independent: bool,
+    obstacles: Vec<Obstacle>,
+    robots: Vec<Robot>,
+    time: f64,
+    steps: usize,
+    metrics: Metrics,
+    neighbourhood: Neighbourhood,
+    // The obstacles near each point (rebuilt only when an obstacle is edited).
+    obstacle_cells: ObstacleCells,
+    // Scratch, reused every step.
+    near: Neighbours,
+    positions: Vec<DVec2>,
+    constraints: safety::Constraints,
+    commands: Vec<Command>,
+    neighbours: Vec<Neighbour>,
+    speeds: Vec<f64>,
+}
+
+impl Simulation {
+    /// A simulation at time 0 of a (validated) scenario, finding neighbours by a grid.
+    #[must_use]
+    pub fn new(s: &Scenario) -> Self {
+        Self::with_neighbourhood(s, Neighbourhood::Grid)
+    }
+
+    /// A simulation at time 0 of a (validated) scenario, finding neighbours as `neighbourhood`
+    /// says (the result is the same either way).
+    #[must_use]
+    pub fn with_neighbourhood(s: &Scenario, neighbourhood: Neighbourhood) -> Self {
+        let robots: Vec<Robot> = s
+            .robots
+            .iter()
+            .map(|r| Robot::at(r.start_pose(), r.goal_pose()))
+            .collect();
+        let n = robots.len();
+        let mut sim = Self {
+            name: s.name.clone(),
+            params: s.params,
+            dt: s.dt,
+            independent: s.independent,
+            obstacles: s.obstacles.clone(),
+            robots,
+            time: 0.0,
+            steps: 0,
+            metrics: Metrics::new(n),
+            neighbourhood,
+            obstacle_cells: ObstacleCells::default(),
+            near: Neighbours::new(),
+            positions: Vec::with_capacity(n),
+            constraints: safety::Constraints::new(),
+            commands: vec![Command::default(); n],
+            neighbours: Vec::new(),
+            speeds: vec![0.0; n],
+        };
+        sim.build_obstacle_cells();
+        sim.evaluate_all();
+        sim.observe();
+        sim
+    }
+
+    /// The robots, in scenario order.
+    #[must_use]
+    pub fn robots(&self) -> &[Robot] {
+        &self.robots
+    }
+    /// The obstacles.
+    #[must_use]
+    pub fn obstacles(&self) -> &[Obstacle] {
+        &self.obstacles
+    }
+    /// The parameters.
+    #[must_use]
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+    /// Simulated time (s).
+    #[must_use]
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+    /// Steps taken.
+    #[must_use]
+    pub fn steps(&self) -> usize {
+        self.steps
+    }
+    /// The step size (s).
+    #[must_use]
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+    /// How neighbours are found.
+    #[must_use]
+    pub fn neighbourhood(&self) -> Neighbourhood {
+        self.neighbourhood
+    }
+
+    /// Makes room for `factor` times as many sensed pairs as the current step has, so that
+    /// steps allocate nothing while the swarm senses fewer (the lists grow by doubling
+    /// otherwise, a few times over a run whose robots close in).
+    pub fn reserve_neighbours(&mut self, factor: f64) {
+        self.near.reserve(factor);
+    }
+
+    /// The reach of the neighbour lists: the sensing radius, and the collision distance
+    /// `2·r_ij` of the violation count should it be larger.
+    fn reach(&self) -> f64 {
+        self.params.sense_radius.max(2.0 * self.params.safe_radius)
+    }
+
+    fn build_obstacle_cells(&mut self) {
+        self.obstacle_cells = match self.neighbourhood {
+            Neighbourhood::Grid => ObstacleCells::build(&self.obstacles, self.reach()),
+            Neighbourhood::AllPairs => ObstacleCells::all(self.obstacles.len()),
+        };
+    }
+
+    /// Whether the robots' neighbours come from the grid's lists.
+    fn listed(&self) -> bool {
+        !self.independent && self.neighbourhood == Neighbourhood::Grid
+    }
+
+    /// Rebuilds the grid's lists for the robots where they are now.
+    fn find_neighbours(&mut self) {
+        if self.listed() {
+            // The positions packed together: the search reads them many times over, and a
+            // robot's whole state is some 200 bytes.
+            self.positions.clear();
+            self.positions.extend(self.robots.iter().map(|r| r.pose.p));
+            let reach = self.reach();
+            self.near.build_points(&self.positions, reach);
+        }
+    }
+
+    /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
+    fn evaluate_all(&mut self) {
+        // Every robot sees the speeds of the same snapshot, whatever the loop order.
+        for (s, r) in self.speeds.iter_mut().zip(&self.robots) {
+            *s = r.last.command.v.abs();
+        }
+        self.find_neighbours();
+        for i in 0..self.robots.len() {
+            self.evaluate_robot(i);
+        }
+    }
+
+    /// Robot `i`'s command from what it senses now (the robots within `R_s` at the snapshot's
+    /// speeds, the obstacles within `R_s`): the DVF controller made safe by the barrier. The
+    /// one place where the method enters the loop (see the module doc).
+    fn evaluate_robot(&mut self, i: usize) {
+        let rs = self.params.sense_radius;
+        let listed = self.listed();
+        // The grid's lists hold the robots within its reach: when that is the sensing radius,
+        // they are the sensed robots (the same test on the same bits).
+        let listed_are_sensed = listed && self.reach() == rs;
+        let me = self.robots[i];
+        self.neighbours.clear();
+        // Either way the sensed robots come in ascending index: the grid's lists are sorted.
+        let mut sense = |j: usize, other: &Robot| {
+            if listed_are_sensed || (j != i && other.pose.p.distance_squared(me.pose.p) <= rs * rs)
+            {
+                self.neighbours.push(Neighbour {
+                    position: other.pose.p,
+                    speed: self.speeds[j],
+                });
+            }
+        };
+        if listed {
+            for &j in self.near.of(i) {
+                sense(j as usize, &self.robots[j as usize]);
+            }
+        } else if !self.independent {
+            for (j, other) in self.robots.iter().enumerate() {
+                sense(j, other);
+            }
+        }
+        let err = Pose {
+            p: me.pose.error_to(me.goal).p,
+            theta: me.heading_error,
+        };
+        let mut e = self.evaluate_at(me.pose, err, self.speeds[i], &self.neighbours);
+        let sensed = sensed_obstacles(&self.obstacles, &self.obstacle_cells, me.pose.p, rs);
+        e.command = safety::filter(
+            &mut self.constraints,
+            &self.params,
+            self.dt,
+            me.pose,
+            e.command,
+            e.field,
+            self.neighbours.iter().map(|n| n.position),
+            sensed,
+        );
+        self.robots[i].last = e;
+        self.commands[i] = e.command;
+    }
+
+    /// The controller ([`evaluate`]) of a robot at `pose` with error `err` (to its goal) and
+    /// speed `speed`, among the obstacles within `R_s` of it and the sensed `neighbours`: what
+    /// a step computes for each robot, and what the playground samples as the field around one.
+    /// One function for both, so that the controller is compiled once into the wasm module.
+    #[inline(never)]
+    #[must_use]
+    pub fn evaluate_at(
+        &self,
+        pose: Pose,
+        err: Pose,
+        speed: f64,
+        neighbours: &[Neighbour],
+    ) -> Evaluation {
+        let rs = self.params.sense_radius;
+        evaluate(
+            &self.params,
+            pose,
+            err,
+            speed,
+            sensed_obstacles(&self.obstacles, &self.obstacle_cells, pose.p, rs),
+            neighbours.iter().copied(),
+        )
+    }
+
+    /// Advances one step of `dt`.
+    // Not inlined: the playground calls it from several places, and one copy keeps the wasm
+    // module small (a call per step costs nothing next to the step).
+    #[inline(never)]
+    pub fn step(&mut self) {
+        for (r, c) in self.robots.iter_mut().zip(&self.commands) {
+            r.pose = integrate(r.pose, *c, self.dt);
+            // Continued while the robot follows its goal field; back on the principal branch
+            // while it circles robots, where the attitude feedback is faded out and the heading
+            // error could otherwise run on to where the continued field points away from the
+            // goal.
+            r.heading_error = if r.last.robot_keep < 1.0 {
+                wrap_angle(r.pose.theta - r.goal.theta)
+            } else {
+                continue_branch(r.heading_error, r.pose.theta, r.goal.theta)
+            };
+        }
+        self.steps += 1;
+        self.time = self.steps as f64 * self.dt;
+        self.evaluate_all();
+        self.observe();
+    }
+
+    /// Updates the metrics from the current state (after [`Self::evaluate_all`], whose
+    /// neighbour lists it reuses).
+    fn observe(&mut self) {
+        let reach = self.reach();
+        self.metrics.observe(&Observed {
+            time: self.time,
+            params: &self.params,
+            independent: self.independent,
+            robots: &self.robots,
+            obstacles: &self.obstacles,
+            obstacle_cells: &self.obstacle_cells,
+            neighbourhood: self.neighbourhood,
+            near: &self.near,
+            reach,
+        });
+    }
+
+    /// Puts robot `i` at `pose`, bound for `goal`, in a simulation that has taken no step yet:
+    /// afterwards it holds the same bits as [`Simulation::new`] of the scenario with that robot
+    /// there, at the cost of the robots that sense it (where it was and where it is now) and an
+    /// O(N) rebuild of the neighbour lists, rather than a whole step's evaluation. The
+    /// playground's drags go through here.
+    ///
+    /// Returns `false`, changing nothing, once a step has been taken (the snapshot speeds are
+    /// then no longer those of a new simulation) or for an index out of range: build a new
+    /// simulation then.
+    pub fn place_robot(&mut self, i: usize, pose: Pose, goal: Pose) -> bool {
+        if self.steps != 0 || i >= self.robots.len() {
+            return false;
+        }
+        let was = self.robots[i].pose.p;
+        self.robots[i] = Robot::at(pose, goal);
+        let now = self.robots[i].pose.p;
+        if now == was {
+            // Only robot `i` depends on its own goal and heading.
+            self.evaluate_robot(i);
+        } else {
+            self.find_neighbours();
+            let near = self.sense_margin();
+            let affected = |q: DVec2| q.distance(was) <= near || q.distance(now) <= near;
+            for j in 0..self.robots.len() {
+                if j == i || (!self.independent && affected(self.robots[j].pose.p)) {
+                    self.evaluate_robot(j);
+                }
+            }
+        }
+        self.observe_again();
+        true
+    }
+
+    /// Replaces obstacle `k` in a simulation that has taken no step yet, with the same bits as
+    /// [`Simulation::new`] of the scenario with that obstacle: the robots within `R_s` of its
+    /// old or new disc are evaluated again. Returns `false`, changing nothing, once a step has
+    /// been taken or for an index out of range.
+    pub fn place_obstacle(&mut self, k: usize, obstacle: Obstacle) -> bool {
+        if self.steps != 0 || k >= self.obstacles.len() {
+            return false;
+        }
+        let was = self.obstacles[k];
+        self.obstacles[k] = obstacle;
+        self.build_obstacle_cells();
+        let near = self.sense_margin();
+        for j in 0..self.robots.len() {
+            let p = self.robots[j].pose.p;
+            if was.clearance(p) <= near || obstacle.clearance(p) <= near {
+                self.evaluate_robot(j);
+            }
+        }
+        self.observe_again();
+        true
+    }
+
+    /// A distance beyond which nothing is sensed: `R_s` and a relative margin, so that
+    /// round-off in a distance cannot leave out a robot whose evaluation changes (evaluating
+    /// one too many gives the same bits).
+    fn sense_margin(&self) -> f64 {
+        self.params.sense_radius * (1.0 + 1e-9) + 1e-9
+    }
+
+    /// The metrics of a simulation that has taken no step, observed again from scratch.
+    fn observe_again(&mut self) {
+        self.metrics.clear();
+        self.observe();
+    }
+
+    /// The report of the run so far.
+    #[must_use]
+    pub fn report(&self) -> Report {
+        Report {
+            name: self.name.clone(),
+            time: self.time,
+            steps: self.steps,
+            robots: self
+                .robots
+                .iter()
+                .zip(&self.metrics.inside_since)
+                .map(|(r, since)| RobotReport {
+                    final_pose: r.pose.to_array(),
+                    position_error: r.position_error(),
+                    heading_error: r.heading_error_abs(),
+                    converged_at: *since,
+                })
+                .collect(),
+            min_pair_distance: self.metrics.min_pair,
+            min_obstacle_clearance: self.metrics.min_clearance,
+            violations: self.metrics.violations,
+        }
+    }
+}
+
+/// The obstacles a robot at `p` senses: those whose surface is within `rs`, ascending (the
+/// cells' candidates, tested).
+fn sensed_obstacles<'a>(
+    obstacles: &'a [Obstacle],
+    cells: &'a ObstacleCells,
+    p: DVec2,
+    rs: f64,
+) -> impl Iterator<Item = &'a Obstacle> + Clone + 'a {
+    cells
+        .near(p)
+        .map(move |k| &obstacles[k])
+        .filter(move |o| o.clearance(p) <= rs)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testing::test;
+    use std::f64::consts::PI;
+
+    /// Continuity through θ̃ = ±π along a trajectory (docs/notes-on-the-paper.md §2): in this run (one of the
+    /// 12 % of random pairs whose heading error passes ±π) the alignment term pushes θ̃ past π.
+    /// Where the principal branch jumps from +π to −π its body-frame field −φ̃ flips, by more
+    /// than half its length; on the continued branch the simulator uses it changes by no more
+    /// than an ordinary step does. Bound: θ̃ moves by at most (k_ω·π + k_a·π/2)·dt ≈ 0.17 rad
+    /// per step, near ±π ‖∂Ξ/∂θ‖ ≈ 0.93 and |p̃| ≈ 0.64·|φ̃|, so a step changes φ̃ by at most
+    /// about 10 % of its length (the largest step of this run is 3.2 %).
+    #[test]
+    fn field_is_continuous_where_the_heading_error_crosses_pi() {
+        use crate::field::goal_field_body;
+        let s = Scenario::from_json(
+            r#"{"duration": 20, "independent": true, "robots": [{
+                "start": [24.21918875932564, 31.044578697427795, 1.8223317158733334],
+                "goal": [43.44229027763088, 63.88736156275513, -1.3015366511357653]}]}"#,
+        )
+        .unwrap();
+        let mut sim = Simulation::new(&s);
+        let field = |sim: &Simulation| {
+            let r = sim.robots()[0];
+            let err = Pose {
+                p: r.pose.error_to(r.goal).p,
+                theta: r.heading_error,
+            };
+            let principal = r.pose.error_to(r.goal);
+            (
+                goal_field_body(err),
+                goal_field_body(principal),
+                principal.theta,
+            )
+        };
+        let mut prev = field(&sim);
+        let mut crossings = 0;
+        for _ in 0..s.steps() {
+            sim.step();
+            let now = field(&sim);
+            let principal_jumped = (now.2 - prev.2).abs() > PI;
+            if principal_jumped {
+                crossings += 1;
+                assert!(sim.robots()[0].heading_error.abs() > PI - 0.1);
+                assert!(now.1.distance(prev.1) > 0.5 * prev.1.length());
+                assert!(
+                    now.0.distance(prev.0) < 0.1 * prev.0.length(),
+                    "continued field jumped from {:?} to {:?}",
+                    prev.0,
+                    now.0
+                );
+            }
+            prev = now;
+        }
+        assert!(crossings >= 1, "the run never crossed ±π");
+    }
+
+    #[test]
+    fn same_input_same_bits() {
+        let s = Scenario::from_json(
+            r#"{"duration":5,"robots":[{"start":[0,0,0],"goal":[3,4,1]},{"start":[3,4,1],"goal":[0,0,0]}],
+                "obstacles":[{"center":[1.5,2],"radius":0.3,"influence":0.8}]}"#,
+        )
+        .unwrap();
+        let a = run(&s);
+        let b = run(&s);
+        for (x, y) in a.robots.iter().zip(&b.robots) {
+            for k in 0..3 {
+                assert_eq!(x.final_pose[k].to_bits(), y.final_pose[k].to_bits());
+            }
+        }
+    }
+}
