@@ -1,11 +1,11 @@
 //! One million steps of the ten-robot example (Example 4) with the page's buffers
-//! ([`dvf::live::Live`]), printing a JSON line every 100,000 steps: simulated time, resident
+//! ([`dvf::playground::Live`]), printing a JSON line every 100,000 steps: simulated time, resident
 //! memory of the process (Linux `/proc/self/statm`), the minimum recorded pair distance and
 //! the largest position error. Memory must stay flat and every number finite.
 //!
 //! Run: `cargo run --release --example long_run`
 
-use dvf::live::Live;
+use dvf::playground::Live;
 use dvf::presets::preset;
 
 const STEPS: usize = 1_000_000;
