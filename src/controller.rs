@@ -229,8 +229,8 @@ pub fn saturate(params: &Params, c: Command) -> Command {
 mod tests {
     use super::*;
     use crate::se2::log;
-    use std::f64::consts::{FRAC_PI_2, PI};
     use crate::testing::test;
+    use std::f64::consts::{FRAC_PI_2, PI};
 
     #[test]
     fn atan_ratio_limits() {

@@ -107,8 +107,8 @@ pub fn integral_curve(start: Pose, goal: Pose, dt: f64, steps: usize) -> Vec<DVe
 mod tests {
     use super::*;
     use crate::testing::assert_close;
-    use std::f64::consts::{FRAC_PI_2, PI};
     use crate::testing::test;
+    use std::f64::consts::{FRAC_PI_2, PI};
 
     #[test]
     fn field_vanishes_exactly_at_the_goal_position() {

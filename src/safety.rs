@@ -287,8 +287,26 @@ mod tests {
         let mut closest = f64::INFINITY;
         for _ in 0..200 {
             // Both commands from the same snapshot, as in the simulator.
-            let ci = filter(&mut Constraints::new(), &p, dt, pi, wild, heading(pi.theta), [pj.p], []);
-            let cj = filter(&mut Constraints::new(), &p, dt, pj, wild, heading(pj.theta), [pi.p], []);
+            let ci = filter(
+                &mut Constraints::new(),
+                &p,
+                dt,
+                pi,
+                wild,
+                heading(pi.theta),
+                [pj.p],
+                [],
+            );
+            let cj = filter(
+                &mut Constraints::new(),
+                &p,
+                dt,
+                pj,
+                wild,
+                heading(pj.theta),
+                [pi.p],
+                [],
+            );
             pi = integrate(pi, ci, dt);
             pj = integrate(pj, cj, dt);
             closest = closest.min(pi.p.distance(pj.p));
@@ -308,7 +326,16 @@ mod tests {
         let mut r = Pose::new(-5.0, 0.0, 0.0);
         let mut closest = f64::INFINITY;
         for _ in 0..200 {
-            let c = filter(&mut Constraints::new(), &p, dt, r, wild, heading(r.theta), [], [&disc]);
+            let c = filter(
+                &mut Constraints::new(),
+                &p,
+                dt,
+                r,
+                wild,
+                heading(r.theta),
+                [],
+                [&disc],
+            );
             r = integrate(r, c, dt);
             closest = closest.min(disc.clearance(r.p));
             assert!(disc.clearance(r.p) >= 0.0);
@@ -344,8 +371,26 @@ mod tests {
                 let li = speed_limits(pi.p, chord(pi.theta, ci.omega, dt), dt, a, ds, [pj.p], []);
                 assert!(li.lo <= 0.0 && li.hi >= 0.0);
                 let (fi, fj) = (
-                    filter(&mut Constraints::new(), &p, dt, pi, ci, DVec2::ZERO, [pj.p], []),
-                    filter(&mut Constraints::new(), &p, dt, pj, cj, DVec2::ZERO, [pi.p], []),
+                    filter(
+                        &mut Constraints::new(),
+                        &p,
+                        dt,
+                        pi,
+                        ci,
+                        DVec2::ZERO,
+                        [pj.p],
+                        [],
+                    ),
+                    filter(
+                        &mut Constraints::new(),
+                        &p,
+                        dt,
+                        pj,
+                        cj,
+                        DVec2::ZERO,
+                        [pi.p],
+                        [],
+                    ),
                 );
                 pi = integrate(pi, fi, dt);
                 pj = integrate(pj, fj, dt);

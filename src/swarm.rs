@@ -236,8 +236,8 @@ pub fn tangent_field(p_i: DVec2, theta: f64, p_o: DVec2, side: Option<DVec2>) ->
 mod tests {
     use super::*;
     use crate::testing::assert_close;
-    use std::f64::consts::{FRAC_PI_2, PI};
     use crate::testing::test;
+    use std::f64::consts::{FRAC_PI_2, PI};
 
     fn at(x: f64, y: f64) -> Neighbour {
         Neighbour {

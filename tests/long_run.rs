@@ -6,7 +6,7 @@
 //! long_run` runs the full million and prints the process's memory as it goes.
 #![cfg(not(target_arch = "wasm32"))]
 
-use dvf::playground::{Live, TRAIL_CAPACITY};
+use dvf::playground::{Live, MAX_TRAIL_SAMPLES};
 use dvf::presets::preset;
 
 const STEPS: usize = 100_000;
@@ -20,11 +20,11 @@ fn a_hundred_thousand_steps_keep_memory_flat_and_numbers_finite() {
     let mut live = Live::new(s.clone()).unwrap();
     let sizes = |l: &Live| {
         (
-            l.trails().len(),
-            l.trail_times().len(),
-            l.trail_min_pair().len(),
+            l.trails().poses().len(),
+            l.trails().times().len(),
+            l.trails().min_pair().len(),
             l.poses().len(),
-            l.predicted().len(),
+            l.prediction().poses().len(),
         )
     };
     let at_start = sizes(&live);
@@ -35,7 +35,7 @@ fn a_hundred_thousand_steps_keep_memory_flat_and_numbers_finite() {
         frames += 1;
         assert_eq!(sizes(&live), at_start, "a buffer grew at frame {frames}");
         assert!(live.poses().iter().all(|v| v.is_finite()));
-        assert!(live.history_len() <= TRAIL_CAPACITY);
+        assert!(live.trails().history_len() <= MAX_TRAIL_SAMPLES);
     }
     assert_eq!(frames, STEPS / STEPS_PER_FRAME);
     assert_eq!(live.steps(), STEPS);
@@ -43,12 +43,12 @@ fn a_hundred_thousand_steps_keep_memory_flat_and_numbers_finite() {
     assert_eq!(live.time(), STEPS as f64 * s.dt);
     // Every recorded trail sample is finite (the rest of the ring is NaN, not recorded) and
     // every recorded pair distance is at least the safe one.
-    let per_robot = TRAIL_CAPACITY * 3;
-    for (i, ring) in live.trails().chunks(per_robot).enumerate() {
+    let per_robot = MAX_TRAIL_SAMPLES * 3;
+    for (i, ring) in live.trails().poses().chunks(per_robot).enumerate() {
         let finite = ring.iter().filter(|v| v.is_finite()).count();
-        assert_eq!(finite, live.trail_len(i) * 3, "robot {i}");
+        assert_eq!(finite, live.trails().len_of(i) * 3, "robot {i}");
     }
-    let recorded: Vec<f64> = live.trail_min_pair()[..live.history_len()].to_vec();
+    let recorded: Vec<f64> = live.trails().min_pair()[..live.trails().history_len()].to_vec();
     assert!(recorded.iter().all(|&d| d.is_finite() && d >= safe));
     // Arrived robots stayed arrived for the whole thousand seconds.
     let report = live.simulation().report();

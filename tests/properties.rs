@@ -9,12 +9,12 @@ use dvf::se2::{exp, log, phi, Pose};
 use dvf::sim::Simulation;
 #[path = "../src/testing.rs"]
 mod testing;
-use testing::XorShift;
 use dvf::Obstacle;
 use glam::DVec2;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngAlgorithm, TestRng, TestRunner};
 use std::f64::consts::PI;
+use testing::XorShift;
 
 /// Convergence as the acceptance criteria define it: position error ≤ 0.05 and heading error ≤ 0.02 rad
 /// (the crate's default `tol_position` / `tol_heading`, restated here so that a change of the

@@ -184,6 +184,11 @@ impl Simulation {
     pub fn dt(&self) -> f64 {
         self.dt
     }
+    /// Whether the robots are independent runs drawn together (they sense no robots).
+    #[must_use]
+    pub fn independent(&self) -> bool {
+        self.independent
+    }
     /// How neighbours are found.
     #[must_use]
     pub fn neighbourhood(&self) -> Neighbourhood {

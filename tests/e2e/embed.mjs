@@ -6,7 +6,18 @@
 //
 // Run: make test-e2e   (or: node tests/e2e/embed.mjs after make build-wasm)
 
-import { canvasStats, changedFraction, check, checkQuiet, frames, join, RESULTS, run, scenarioOf, waitLoaded } from './lib.mjs';
+import {
+  canvasStats,
+  changedFraction,
+  check,
+  checkQuiet,
+  frames,
+  join,
+  RESULTS,
+  run,
+  scenarioOf,
+  waitLoaded,
+} from './lib.mjs';
 
 const VIEWPORT = { width: 1100, height: 900 };
 const FIELD = '#field';
@@ -21,7 +32,10 @@ await run(async ({ base, newPage }) => {
 
   const field = await scenarioOf(page, FIELD);
   const swap = await scenarioOf(page, SWAP);
-  check(field.robots.length === 1 && swap.robots.length === 2, 'the two instances load their own scenario files (src attribute)');
+  check(
+    field.robots.length === 1 && swap.robots.length === 2,
+    'the two instances load their own scenario files (src attribute)',
+  );
   const count = await page.locator('dvf-playground').count();
   check(count === 2, `the page embeds ${count} instances`);
   const toolbarHidden = await page.locator(`${FIELD} [data-id="add-robot"]`).isHidden();
@@ -40,22 +54,38 @@ await run(async ({ base, newPage }) => {
   await t0.press('Enter');
   await frames(page);
   const turned = await canvasStats(page, FIELD);
-  check(changedFraction(curves, turned) > 0.02, `θ(0) = −90° turns the curves (${(changedFraction(curves, turned) * 100).toFixed(1)} % of blocks)`);
+  check(
+    changedFraction(curves, turned) > 0.02,
+    `θ(0) = −90° turns the curves (${(changedFraction(curves, turned) * 100).toFixed(1)} % of blocks)`,
+  );
   await page.screenshot({ path: join(RESULTS, 'embed-theta-minus-90.png'), fullPage: true });
 
   // The API: pause, reset, step(n), play; worldToScreen points at the robot; change events.
-  await page.evaluate((sel) => { const el = document.querySelector(sel); el.pause(); el.reset(); }, SWAP);
-  const stepped = await page.evaluate((sel) => { const el = document.querySelector(sel); el.step(100); return el.cache.time; }, SWAP);
+  await page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    el.pause();
+    el.reset();
+  }, SWAP);
+  const stepped = await page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    el.step(100);
+    return el.cache.time;
+  }, SWAP);
   check(Math.abs(stepped - 1) < 1e-9, `step(100) advances 100 steps of 0.01 s (t = ${stepped})`);
   await page.evaluate((sel) => document.querySelector(sel).reset(), SWAP);
   await page.evaluate((sel) => {
     const el = document.querySelector(sel);
     window.changes = 0;
-    el.addEventListener('change', () => { window.changes += 1; });
+    el.addEventListener('change', () => {
+      window.changes += 1;
+    });
   }, SWAP);
   const robot = swap.robots[0].start;
   await page.locator(SWAP).scrollIntoViewIfNeeded();
-  const at = await page.evaluate(([sel, x, y]) => document.querySelector(sel).worldToScreen(x, y), [SWAP, robot[0], robot[1]]);
+  const at = await page.evaluate(
+    ([sel, x, y]) => document.querySelector(sel).worldToScreen(x, y),
+    [SWAP, robot[0], robot[1]],
+  );
   const scroll = await page.evaluate(() => [window.scrollX, window.scrollY]);
   const before = await canvasStats(page, SWAP);
   const fieldBefore = await scenarioOf(page, FIELD);
@@ -66,10 +96,16 @@ await run(async ({ base, newPage }) => {
   await frames(page);
   const dragged = await scenarioOf(page, SWAP);
   const after = await canvasStats(page, SWAP);
-  check(dragged.robots[0].start[1] > robot[1] + 1, `worldToScreen finds robot 1 and a drag moves it (y ${robot[1]} → ${dragged.robots[0].start[1].toFixed(2)})`);
+  check(
+    dragged.robots[0].start[1] > robot[1] + 1,
+    `worldToScreen finds robot 1 and a drag moves it (y ${robot[1]} → ${dragged.robots[0].start[1].toFixed(2)})`,
+  );
   check(changedFraction(before, after) > 0.002, 'the drag changes the picture');
-  check(await page.evaluate(() => window.changes) === 1, 'one change event per drag');
-  check(JSON.stringify(await scenarioOf(page, FIELD)) === JSON.stringify(fieldBefore), 'the other instance is untouched');
+  check((await page.evaluate(() => window.changes)) === 1, 'one change event per drag');
+  check(
+    JSON.stringify(await scenarioOf(page, FIELD)) === JSON.stringify(fieldBefore),
+    'the other instance is untouched',
+  );
 
   // load(): a good scenario replaces the scene; a bad one throws the core's message and keeps it.
   const result = await page.evaluate((sel) => {
@@ -81,12 +117,21 @@ await run(async ({ base, newPage }) => {
       error = e.message;
     }
     const kept = el.scenario().robots.length;
-    el.load({ name: 'three', robots: [[0, 0], [5, 0], [0, 5]].map(([x, y]) => ({ start: [x, y, 0], goal: [x + 10, y, 0] })) });
+    el.load({
+      name: 'three',
+      robots: [
+        [0, 0],
+        [5, 0],
+        [0, 5],
+      ].map(([x, y]) => ({ start: [x, y, 0], goal: [x + 10, y, 0] })),
+    });
     el.play();
     return { error, kept, now: el.scenario().robots.length };
   }, SWAP);
-  check(result.error.startsWith('dt:') && result.kept === 2 && result.now === 3,
-    `load() rejects NaN with "${result.error}", keeps the scene, then loads three robots`);
+  check(
+    result.error.startsWith('dt:') && result.kept === 2 && result.now === 3,
+    `load() rejects NaN with "${result.error}", keeps the scene, then loads three robots`,
+  );
   await page.waitForFunction((sel) => document.querySelector(sel).cache.time > 0.3, SWAP);
   // Moved elsewhere in the page, an instance keeps its simulation and its single wiring.
   const moved = await page.evaluate((sel) => {
@@ -100,8 +145,10 @@ await run(async ({ base, newPage }) => {
     el.shadowRoot.querySelector('[data-id="add-robot"]').click();
     return { t, after: el.cache.time, robots: el.scenario().robots.length, changes: window.changes };
   }, SWAP);
-  check(moved.after === moved.t && moved.robots === 4 && moved.changes === 1,
-    `a moved instance keeps its time (${moved.t.toFixed(2)} s) and adds one robot per click with one change event`);
+  check(
+    moved.after === moved.t && moved.robots === 4 && moved.changes === 1,
+    `a moved instance keeps its time (${moved.t.toFixed(2)} s) and adds one robot per click with one change event`,
+  );
   await page.screenshot({ path: join(RESULTS, 'embed-after-api.png'), fullPage: true });
   checkQuiet(page, 'embed page');
 });

@@ -1,6 +1,7 @@
-// Shared by the end-to-end tests: a python3 http.server on www/ (the RELEASE wasm package that
-// `make build-wasm` writes), Debian's Chromium through playwright-core, a check list that
-// fails the run, and pixel statistics of a playground's canvas.
+// Shared by the end-to-end tests, the browser benchmark and the README's picture: a python3
+// http.server on www/ (the RELEASE wasm package that `make build-wasm` writes), Debian's
+// Chromium through playwright-core, a check list that fails the run, pixel statistics of a
+// playground's canvas, and the scenes and gestures that more than one of them drives.
 
 import { spawn } from 'node:child_process';
 import { existsSync, mkdirSync } from 'node:fs';
@@ -14,8 +15,14 @@ export const WWW = join(ROOT, 'www');
 export const RESULTS = join(ROOT, 'test-results');
 const CHROMIUM = '/usr/bin/chromium';
 const CHROMIUM_ARGS = [
-  '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync',
+  '--headless',
+  '--no-sandbox',
+  '--disable-gpu',
+  '--disable-quic',
+  '--no-first-run',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
 ];
 const SERVER_START_TIMEOUT_MS = 10_000;
 export const PAGE_TIMEOUT_MS = 20_000;
@@ -52,7 +59,9 @@ async function startServer() {
     stdio: ['ignore', 'ignore', 'pipe'],
   });
   let stderr = '';
-  server.stderr.on('data', (d) => { stderr += d; });
+  server.stderr.on('data', (d) => {
+    stderr += d;
+  });
   const deadline = Date.now() + SERVER_START_TIMEOUT_MS;
   while (Date.now() < deadline) {
     if (server.exitCode !== null) throw new Error(`http.server exited: ${stderr}`);
@@ -116,7 +125,10 @@ export async function run(body) {
 /** Checks that `page` logged no console error or warning and no page or request error. */
 export function checkQuiet(page, what) {
   const p = page.problems;
-  check(p.length === 0, `${what}: no console errors or warnings, no page errors${p.length ? `:\n  ${p.join('\n  ')}` : ''}`);
+  check(
+    p.length === 0,
+    `${what}: no console errors or warnings, no page errors${p.length ? `:\n  ${p.join('\n  ')}` : ''}`,
+  );
 }
 
 /** Waits for two animation frames, so that a requested draw has happened. */
@@ -141,35 +153,146 @@ export function scenarioOf(page, selector = 'dvf-playground') {
  * down-sampled copy (mean of each 8×8 block) for comparing two pictures.
  */
 export function canvasStats(page, selector = 'dvf-playground') {
-  return page.evaluate(([sel, spread]) => {
-    const c = document.querySelector(sel).shadowRoot.querySelector('[data-id="canvas"]');
-    // Read through a copy, so that the page's own context never reads back (Chromium warns
-    // when a context without willReadFrequently is read repeatedly).
-    const copy = document.createElement('canvas');
-    copy.width = c.width;
-    copy.height = c.height;
-    const cc = copy.getContext('2d', { willReadFrequently: true });
-    cc.drawImage(c, 0, 0);
-    const { data } = cc.getImageData(0, 0, c.width, c.height);
-    let coloured = 0;
-    const block = 8;
-    const bw = Math.ceil(c.width / block);
-    const bh = Math.ceil(c.height / block);
-    const blocks = new Array(bw * bh).fill(0);
-    for (let i = 0; i < data.length; i += 4) {
-      const r = data[i], g = data[i + 1], b = data[i + 2];
-      if (Math.max(r, g, b) - Math.min(r, g, b) > spread) coloured++;
-      const p = i / 4;
-      blocks[Math.floor(p / c.width / block) * bw + Math.floor((p % c.width) / block)] += r + g + b;
-    }
-    return { width: c.width, height: c.height, cssWidth: c.clientWidth, dpr: window.devicePixelRatio, coloured, blocks };
-  }, [selector, COLOURED_SPREAD]);
+  return page.evaluate(
+    ([sel, spread]) => {
+      const c = document.querySelector(sel).shadowRoot.querySelector('[data-id="canvas"]');
+      // Read through a copy, so that the page's own context never reads back (Chromium warns
+      // when a context without willReadFrequently is read repeatedly).
+      const copy = document.createElement('canvas');
+      copy.width = c.width;
+      copy.height = c.height;
+      const cc = copy.getContext('2d', { willReadFrequently: true });
+      cc.drawImage(c, 0, 0);
+      const { data } = cc.getImageData(0, 0, c.width, c.height);
+      let coloured = 0;
+      const block = 8;
+      const bw = Math.ceil(c.width / block);
+      const bh = Math.ceil(c.height / block);
+      const blocks = new Array(bw * bh).fill(0);
+      for (let i = 0; i < data.length; i += 4) {
+        const r = data[i],
+          g = data[i + 1],
+          b = data[i + 2];
+        if (Math.max(r, g, b) - Math.min(r, g, b) > spread) coloured++;
+        const p = i / 4;
+        blocks[Math.floor(p / c.width / block) * bw + Math.floor((p % c.width) / block)] += r + g + b;
+      }
+      return {
+        width: c.width,
+        height: c.height,
+        cssWidth: c.clientWidth,
+        dpr: window.devicePixelRatio,
+        coloured,
+        blocks,
+      };
+    },
+    [selector, COLOURED_SPREAD],
+  );
 }
 
 /** Fraction of 8×8 blocks whose mean colour differs noticeably between two canvasStats. */
 export function changedFraction(a, b) {
   if (a.blocks.length !== b.blocks.length) return 1;
   return a.blocks.filter((v, i) => Math.abs(v - b.blocks[i]) > 8 * 8 * 3 * 4).length / a.blocks.length;
+}
+
+/** The preset of the README's picture, the drag and the prediction figures: the paper's Example 4. */
+export const EXAMPLE4 = 'example4-obstacle-formation';
+
+/**
+ * The README's picture on `page` (1280×800 at scale 1): Example 4 at t = 0.7 s, as the robots
+ * pass the obstacle, with the field of the robot that goes round it.
+ */
+export async function showReadmeScene(page, selector = 'dvf-playground') {
+  await page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    el.step(70);
+    el.focusRobot = 2;
+  }, selector);
+  await frames(page);
+}
+
+/**
+ * Drags with the mouse from page point (x, y), `moves` moves of (dx, dy) each, and keeps the
+ * button down until the moves are drawn; then releases it. Returns what the page did in the
+ * meantime: the animation frames the browser produced (`frames`, over `span` s, the longest
+ * gap `worst` ms between two), how often the playground redrew (`redraws`), its slowest frame
+ * and its last edit (ms).
+ */
+export async function drag(page, [x, y], moves, [dx, dy], selector = 'dvf-playground') {
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  // The page's own frame clock during the drag: every animation frame the browser produced.
+  await page.evaluate((sel) => {
+    window.dragFrames = [];
+    window.dragging = true;
+    const tick = (t) => {
+      if (!window.dragging) return;
+      window.dragFrames.push(t);
+      requestAnimationFrame(tick);
+    };
+    requestAnimationFrame(tick);
+    const el = document.querySelector(sel);
+    el.stats.maxFrameWorkMs = 0;
+    window.redraws0 = el.stats.frames;
+  }, selector);
+  for (let k = 1; k <= moves; k++) await page.mouse.move(x + k * dx, y + k * dy);
+  await frames(page);
+  const figures = await page.evaluate((sel) => {
+    window.dragging = false;
+    const t = window.dragFrames;
+    let worst = 0;
+    for (let k = 1; k < t.length; k++) worst = Math.max(worst, t[k] - t[k - 1]);
+    const el = document.querySelector(sel);
+    return {
+      frames: t.length,
+      span: (t[t.length - 1] - t[0]) / 1000,
+      worst,
+      redraws: el.stats.frames - window.redraws0,
+      maxWork: el.stats.maxFrameWorkMs,
+      edit: el.stats.lastEditMs,
+    };
+  }, selector);
+  await page.mouse.up();
+  await frames(page);
+  return figures;
+}
+
+/**
+ * Runs the predictions of `preset` in a Playground of its own on `page`, `runs` times each
+ * after `warmup` untimed ones (as a batch: the browser's clock is coarse, 0.1 ms or worse, next
+ * to one prediction). Returns the ms per prediction (`predict`), per robot move with its checks
+ * and prediction (`edit`), the samples per robot and the time the prediction reached (`end`,
+ * stopped early once every robot converged), and the same without stopping early, with
+ * tolerances no robot meets (`full`, `fullEnd`).
+ */
+export function predictions(page, preset, runs, warmup) {
+  return page.evaluate(
+    async ([name, runs, warmup]) => {
+      const { Playground } = await import('./pkg/dvf.js');
+      const pg = Playground.fromPreset(name);
+      for (let k = 0; k < warmup; k++) pg.predict();
+      let t0 = performance.now();
+      for (let k = 0; k < runs; k++) pg.predict();
+      const predict = (performance.now() - t0) / runs;
+      t0 = performance.now();
+      for (let k = 0; k < runs; k++) pg.moveRobot(0, -60 + (k % 5) * 0.3, -40, 0);
+      const edit = (performance.now() - t0) / runs;
+      const samples = pg.predictedSamples;
+      const end = pg.predictedTimes()[samples - 1];
+      const s = pg.scenario();
+      s.params.tol_position = 1e-12;
+      s.params.tol_heading = 1e-12;
+      pg.edit(s);
+      t0 = performance.now();
+      for (let k = 0; k < runs; k++) pg.predict();
+      const full = (performance.now() - t0) / runs;
+      const fullEnd = pg.predictedTimes()[pg.predictedSamples - 1];
+      pg.free();
+      return { predict, edit, samples, end, full, fullEnd };
+    },
+    [preset, runs, warmup],
+  );
 }
 
 export { join };

@@ -16,7 +16,7 @@
 //
 // Run: make test-e2e   (or: node tests/e2e/frames.mjs after make build-wasm)
 
-import { RESULTS, check, checkQuiet, join, run } from './lib.mjs';
+import { check, checkQuiet, join, RESULTS, run } from './lib.mjs';
 
 const VIEWPORT = { width: 1280, height: 800 };
 const PG = 'dvf-playground';
@@ -45,25 +45,32 @@ await run(async ({ base, newPage }) => {
     await page.waitForSelector('body[data-ready]');
     const loaded = await page.evaluate((sel) => document.querySelector(sel).presetName(), PG);
     check(loaded === `crowd-${robots}`, `#crowd-${robots} opens the crowd (${loaded})`);
-    const prep = await page.evaluate(([sel, fraction]) => {
-      const el = document.querySelector(sel);
-      const total = Math.round(el.pg.duration / el.pg.dt);
-      el.step(Math.round(total * fraction));
-      return { time: el.pg.time, duration: el.pg.duration, field: el.fieldMode, recorded: el.pg.trailRecorded };
-    }, [PG, ahead]);
-    const result = await page.evaluate(async ([sel, playMs]) => {
-      const el = document.querySelector(sel);
-      const before = el.stats.workCount;
-      const t0 = el.pg.time;
-      el.stats.rasterInWork = true;
-      el.play();
-      await new Promise((r) => setTimeout(r, playMs));
-      el.pause();
-      const count = Math.min(el.stats.workCount - before, el.stats.work.length);
-      const work = [];
-      for (let k = el.stats.workCount - count; k < el.stats.workCount; k++) work.push(el.stats.work[k % el.stats.work.length]);
-      return { work, simulated: el.pg.time - t0, stepMs: el.stepMs, trailSamples: el.pg.trailRecorded };
-    }, [PG, PLAY_MS]);
+    const prep = await page.evaluate(
+      ([sel, fraction]) => {
+        const el = document.querySelector(sel);
+        const total = Math.round(el.pg.duration / el.pg.dt);
+        el.step(Math.round(total * fraction));
+        return { time: el.pg.time, duration: el.pg.duration, field: el.fieldMode, recorded: el.pg.trailRecorded };
+      },
+      [PG, ahead],
+    );
+    const result = await page.evaluate(
+      async ([sel, playMs]) => {
+        const el = document.querySelector(sel);
+        const before = el.stats.workCount;
+        const t0 = el.pg.time;
+        el.stats.rasterInWork = true;
+        el.play();
+        await new Promise((r) => setTimeout(r, playMs));
+        el.pause();
+        const count = Math.min(el.stats.workCount - before, el.stats.work.length);
+        const work = [];
+        for (let k = el.stats.workCount - count; k < el.stats.workCount; k++)
+          work.push(el.stats.work[k % el.stats.work.length]);
+        return { work, simulated: el.pg.time - t0, stepMs: el.stepMs, trailSamples: el.pg.trailRecorded };
+      },
+      [PG, PLAY_MS],
+    );
     // Frames after the first: the first one after play() redraws the trail layer at most once.
     const work = result.work.slice(1);
     const median = quantile(work, 0.5);
@@ -72,23 +79,27 @@ await run(async ({ base, newPage }) => {
     // Frames per second of wall time (the timestamps of animation frames are those of the
     // display's beats, which a late frame still gets).
     const fps = (work.length + 1) / (PLAY_MS / 1000);
-    console.log(`BENCH ${JSON.stringify({
-      robots,
-      frames: work.length + 1,
-      fps: Number(fps.toFixed(1)),
-      ms_per_frame_median: Number(median.toFixed(2)),
-      ms_per_frame_p90: Number(p90.toFixed(2)),
-      ms_per_frame_max: Number(max.toFixed(2)),
-      ms_per_step: Number(result.stepMs?.toFixed(3)),
-      simulated_s: Number(result.simulated.toFixed(2)),
-      from_t: Number(prep.time.toFixed(1)),
-      trail_samples: result.trailSamples,
-    })}`);
+    console.log(
+      `BENCH ${JSON.stringify({
+        robots,
+        frames: work.length + 1,
+        fps: Number(fps.toFixed(1)),
+        ms_per_frame_median: Number(median.toFixed(2)),
+        ms_per_frame_p90: Number(p90.toFixed(2)),
+        ms_per_frame_max: Number(max.toFixed(2)),
+        ms_per_step: Number(result.stepMs?.toFixed(3)),
+        simulated_s: Number(result.simulated.toFixed(2)),
+        from_t: Number(prep.time.toFixed(1)),
+        trail_samples: result.trailSamples,
+      })}`,
+    );
     check(work.length >= 10, `${robots} robots: the crowd played ${work.length + 1} frames in ${PLAY_MS} ms`);
     check(result.simulated > 0, `${robots} robots: the clock advanced ${result.simulated.toFixed(2)} s`);
     check(prep.field === 'arrows', `${robots} robots: the field overlay is on (${prep.field})`);
-    check(median <= budgetMs && p90 <= 1.25 * budgetMs,
-      `${robots} robots: a frame's work takes at most ${budgetMs} ms (median ${median.toFixed(1)} ms; 90th percentile ${p90.toFixed(1)} ms, limit ${1.25 * budgetMs} ms)`);
+    check(
+      median <= budgetMs && p90 <= 1.25 * budgetMs,
+      `${robots} robots: a frame's work takes at most ${budgetMs} ms (median ${median.toFixed(1)} ms; 90th percentile ${p90.toFixed(1)} ms, limit ${1.25 * budgetMs} ms)`,
+    );
     await page.screenshot({ path: join(RESULTS, `crowd-${robots}.png`) });
     checkQuiet(page, `crowd of ${robots}`);
     await page.context().close();

@@ -1,0 +1,165 @@
+//! The robots within a reach of each robot, as flat per-robot lists in ascending index, at O(N)
+//! cost for a bounded density (the sensed sets of a step and the pairs of the metrics).
+
+use super::cells::Cells;
+use super::FEW_ROBOTS;
+use glam::DVec2;
+
+/// The robots within `reach` of each robot, as flat per-robot lists (compressed rows).
+///
+/// After [`Neighbours::build`], [`Neighbours::of`]`(i)` holds the indices `j ≠ i` with
+/// `|p_j − p_i|² ≤ reach²`, ascending. The same predicate as a scan over all pairs, so the two
+/// give the same sets. Up to [`FEW_ROBOTS`] robots the lists come from that scan; above, from a
+/// [`Cells`] table of cells as wide as the reach.
+#[derive(Clone, Debug, Default)]
+pub struct Neighbours {
+    cells: Cells,
+    // The lists: robot `i`'s neighbours are `list[first[i]..first[i + 1]]`. `hits` holds each
+    // robot's neighbours of higher index in bucket order, robot `i`'s from `upper[i]`;
+    // `cursor` is a fill position per row.
+    first: Vec<u32>,
+    list: Vec<u32>,
+    hits: Vec<u32>,
+    upper: Vec<u32>,
+    cursor: Vec<u32>,
+}
+
+impl Neighbours {
+    /// An empty search; its buffers grow on the first [`Neighbours::build`].
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Rebuilds the lists for the `n` robots at `positions(0..n)` and a `reach` (scenario
+    /// units). Reuses the buffers: after the first call with as many robots, it allocates only
+    /// when the lists' total grows past its previous maximum.
+    ///
+    /// A non-finite position is nobody's neighbour (its distance is not `≤ reach`), as in a
+    /// scan over all pairs.
+    pub fn build(&mut self, positions: impl Fn(usize) -> DVec2, n: usize, reach: f64) {
+        if n <= FEW_ROBOTS {
+            // A few robots: the scan over all pairs costs less than the cells (the paper's
+            // examples have ten), and it is the definition the lists meet.
+            let reach2 = reach * reach;
+            self.first.clear();
+            self.list.clear();
+            for i in 0..n {
+                self.first.push(self.list.len() as u32);
+                let p = positions(i);
+                for j in 0..n {
+                    if j != i && positions(j).distance_squared(p) <= reach2 {
+                        self.list.push(j as u32);
+                    }
+                }
+            }
+            self.first.push(self.list.len() as u32);
+            return;
+        }
+        self.cells.build(&positions, n, reach);
+
+        // The hits of each robot, in bucket order: the robots of higher index within reach
+        // among the 3 × 3 cells around it (a robot within reach is at most one cell away along
+        // each axis). "Within reach" is symmetric (the squared distance of a pair is the same
+        // bits either way round), so each pair is tested once.
+        let reach2 = reach * reach;
+        self.upper.clear();
+        // `hits[..count]` are the hits so far; the rest is room (kept from build to build), so
+        // that a candidate is written before its test and kept by advancing `count`: no
+        // branch to mispredict.
+        let mut count = 0usize;
+        for i in 0..n {
+            self.upper.push(count as u32);
+            let p = positions(i);
+            let (runs, k) = self.cells.block(self.cells.coords(p));
+            for &(from, to) in &runs[..k] {
+                let candidates = &self.cells.order()[from as usize..to as usize];
+                if self.hits.len() < count + candidates.len() {
+                    self.hits.resize(2 * (count + candidates.len()), 0);
+                }
+                for &j in candidates {
+                    self.hits[count] = j;
+                    let hit =
+                        (j as usize > i) & (positions(j as usize).distance_squared(p) <= reach2);
+                    count += usize::from(hit);
+                }
+            }
+        }
+        self.upper.push(count as u32);
+
+        // Ascending rows without a sort. Row `i` is its neighbours of lower index, then those
+        // of higher index. (1) Lengths: robot `j`'s lower neighbours are the `i` whose hits
+        // hold `j`. (2) Scattering each `i` into the rows of its hits, for `i` ascending, fills
+        // every lower part in ascending order. (3) Scattering each `i` into the rows of its
+        // lower neighbours, for `i` ascending, fills every upper part in ascending order.
+        self.cursor.clear();
+        self.cursor.resize(n, 0);
+        for &j in &self.hits[..count] {
+            self.cursor[j as usize] += 1;
+        }
+        self.first.clear();
+        let mut total = 0u32;
+        for i in 0..n {
+            self.first.push(total);
+            total += self.cursor[i] + (self.upper[i + 1] - self.upper[i]);
+        }
+        self.first.push(total);
+        self.list.clear();
+        self.list.resize(total as usize, 0);
+        self.cursor.clear();
+        self.cursor.extend_from_slice(&self.first[..n]);
+        for i in 0..n {
+            let (a, b) = (self.upper[i] as usize, self.upper[i + 1] as usize);
+            for &j in &self.hits[a..b] {
+                let slot = &mut self.cursor[j as usize];
+                self.list[*slot as usize] = i as u32;
+                *slot += 1;
+            }
+        }
+        // `cursor[i]` is now where row `i`'s upper part starts, past its lower part.
+        for i in 0..n {
+            let lower_end = self.first[i + 1] - (self.upper[i + 1] - self.upper[i]);
+            for k in self.first[i]..lower_end {
+                let j = self.list[k as usize] as usize;
+                let slot = &mut self.cursor[j];
+                self.list[*slot as usize] = i as u32;
+                *slot += 1;
+            }
+        }
+    }
+
+    /// [`Neighbours::build`] for a slice of positions (one instance of the generic build for
+    /// every caller with a slice: the wasm module stays smaller).
+    pub fn build_points(&mut self, points: &[DVec2], reach: f64) {
+        self.build(|i| points[i], points.len(), reach);
+    }
+
+    /// Makes room for `factor` times as many neighbours in all as the last build found, so
+    /// that rebuilds allocate nothing while the total stays below that.
+    pub fn reserve(&mut self, factor: f64) {
+        let want = (self.list.len() as f64 * factor) as usize;
+        self.list.reserve(want.saturating_sub(self.list.len()));
+        // The hits hold half the pairs, plus room for one range of candidates (at most all).
+        let room = want / 2 + self.cells.order().len() + 1;
+        if self.hits.len() < room {
+            self.hits.resize(room, 0);
+        }
+    }
+
+    /// Robot `i`'s neighbours, ascending (empty before the first build or for `i` out of range).
+    #[must_use]
+    pub fn of(&self, i: usize) -> &[u32] {
+        match (self.first.get(i), self.first.get(i + 1)) {
+            (Some(&a), Some(&b)) => &self.list[a as usize..b as usize],
+            _ => &[],
+        }
+    }
+
+    /// The capacities of the cell table's bucket starts and order, of the lists, and the
+    /// lists' address: a test checks that a rebuild reuses them.
+    #[cfg(test)]
+    pub(super) fn buffers(&self) -> (usize, usize, usize, *const u32) {
+        let (start, order) = self.cells.capacities();
+        (start, order, self.list.capacity(), self.list.as_ptr())
+    }
+}
