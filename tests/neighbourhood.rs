@@ -1,12 +1,12 @@
 //! The grid neighbour search ([`Neighbourhood::Grid`]) against the all-pairs reference
 //! ([`Neighbourhood::AllPairs`]): the same bits at every step (poses, heading errors, the
 //! controller's evaluations) and the same report, on every preset, on circle crowds and on
-//! random scenarios. They run natively and in Chromium (`wasm-pack test --headless --chrome`).
+//! random scenarios. They run natively, in Node (`wasm-pack test --node`) and in Chromium
+//! (`make test-browser`).
 
-#[cfg(target_arch = "wasm32")]
-use wasm_bindgen_test::wasm_bindgen_test as test;
-#[cfg(target_arch = "wasm32")]
-wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
+#[path = "../src/testing.rs"]
+mod testing;
+use testing::test;
 
 use dvf::presets::{circle_swap, crowd, crowd_with_obstacles, PRESETS};
 use dvf::sim::{Neighbourhood, Robot, Simulation};

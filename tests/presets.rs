@@ -1,10 +1,10 @@
 //! Scenario tests: every preset of the paper's examples does what the paper shows.
-//! They run natively and in Chromium (`wasm-pack test --headless --chrome`).
+//! They run natively, in Node (`wasm-pack test --node`) and in Chromium
+//! (`make test-browser`).
 
-#[cfg(target_arch = "wasm32")]
-use wasm_bindgen_test::wasm_bindgen_test as test;
-#[cfg(target_arch = "wasm32")]
-wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
+#[path = "../src/testing.rs"]
+mod testing;
+use testing::test;
 
 use dvf::params::Avoidance;
 use dvf::presets::{preset, PRESETS, TABLE2_OBSTACLES};

@@ -1,12 +1,15 @@
-//! The JavaScript facade (`src/wasm.rs`) in Chromium:
+//! The JavaScript facade (`src/wasm/`) in Chromium:
 //! `wasm-pack test --headless --chrome -- --test web_facade`.
 #![cfg(target_arch = "wasm32")]
 
-use dvf::playground::{CURVE_POINTS, MAX_LIVE_ROBOTS, MAX_PREDICTED_ROBOTS, TRAIL_CAPACITY};
+use dvf::playground::{
+    CURVE_POINTS, FIELD_STRIDE, MAX_LIVE_ROBOTS, MAX_PREDICTED_ROBOTS, MAX_TRAIL_SAMPLES,
+    POSE_STRIDE, STATUS_STRIDE,
+};
 use dvf::presets::{DEFAULT_PRESET, PRESETS};
+use dvf::wasm::playground::Buffer;
 use dvf::wasm::{
-    default_preset, playground_limits, preset_scenario, presets, Playground, Run, FIELD_STRIDE,
-    POSE_STRIDE, SAMPLE_STRIDE, STATUS_STRIDE,
+    default_preset, playground_limits, preset_scenario, presets, Playground, Run, SAMPLE_STRIDE,
 };
 use js_sys::Float64Array;
 use wasm_bindgen::{JsCast, JsValue};
@@ -120,33 +123,36 @@ fn playground_arrays_have_the_documented_layouts() {
     let mut pg = Playground::from_preset(DEFAULT_PRESET).unwrap();
     let n = pg.robot_count();
     assert_eq!(n, 10);
-    assert_eq!(pg.poses().length() as usize, n * POSE_STRIDE);
-    assert_eq!(pg.status().length() as usize, n * STATUS_STRIDE);
+    assert_eq!(buf(pg.layout_now().poses).len(), n * POSE_STRIDE);
+    assert_eq!(buf(pg.layout_now().status).len(), n * STATUS_STRIDE);
     assert_eq!(
-        pg.trails().length() as usize,
-        n * TRAIL_CAPACITY * POSE_STRIDE
+        buf(pg.layout_now().trails).len(),
+        n * MAX_TRAIL_SAMPLES * POSE_STRIDE
     );
-    assert_eq!(pg.trail_times().length() as usize, TRAIL_CAPACITY);
-    assert_eq!(pg.trail_min_pair().length() as usize, TRAIL_CAPACITY);
+    assert_eq!(buf(pg.layout_now().trail_times).len(), MAX_TRAIL_SAMPLES);
+    assert_eq!(buf(pg.layout_now().trail_min_pair).len(), MAX_TRAIL_SAMPLES);
     // At t = 0 the history holds the start, and the prediction starts there too.
-    assert_eq!((pg.history_length(), pg.trail_head()), (1, 1));
-    assert_eq!(pg.trail_length(0.0).unwrap(), 1);
-    let samples = pg.predicted_samples();
+    assert_eq!(
+        (pg.layout_now().history_length, pg.layout_now().trail_head),
+        (1, 1)
+    );
+    assert_eq!(pg.live().trails().len_of(0), 1);
+    let samples = pg.layout_now().predicted_samples;
     assert!(samples >= 2);
-    let predicted = pg.predicted().to_vec();
+    let predicted = buf(pg.layout_now().predicted).to_vec();
     assert_eq!(predicted.len(), n * samples * POSE_STRIDE);
-    assert_eq!(pg.predicted_times().length() as usize, samples);
-    assert_eq!(pg.predicted_min_pair().length() as usize, samples);
-    assert_eq!(&predicted[..3], &pg.poses().to_vec()[..3]);
+    assert_eq!(buf(pg.layout_now().predicted_times).len(), samples);
+    assert_eq!(buf(pg.layout_now().predicted_min_pair).len(), samples);
+    assert_eq!(&predicted[..3], &buf(pg.layout_now().poses).to_vec()[..3]);
     // Robot 2's prediction starts at robot 2's pose: robot-major layout.
     assert_eq!(
         &predicted[samples * POSE_STRIDE..samples * POSE_STRIDE + 3],
-        &pg.poses().to_vec()[3..6]
+        &buf(pg.layout_now().poses).to_vec()[3..6]
     );
-    let field = pg
-        .sample_field(0.0, -10.0, -5.0, 10.0, 5.0, 5.0, 3.0)
-        .unwrap()
-        .to_vec();
+    let len = pg
+        .refresh_field(0.0, -10.0, -5.0, 10.0, 5.0, 5.0, 3.0)
+        .unwrap();
+    let field = view(pg.layout_now().field.pointer, len);
     assert_eq!(field.len(), 5 * 3 * FIELD_STRIDE);
     assert_eq!(&field[..2], &[-10.0, -5.0]);
     assert_eq!(&field[(5 * 3 - 1) * FIELD_STRIDE..][..2], &[10.0, 5.0]);
@@ -160,7 +166,7 @@ fn playground_arrays_have_the_documented_layouts() {
     let limits = playground_limits().unwrap();
     assert_eq!(
         get(&limits, "trailCapacity").as_f64(),
-        Some(TRAIL_CAPACITY as f64)
+        Some(MAX_TRAIL_SAMPLES as f64)
     );
     assert_eq!(
         get(&limits, "maxRobots").as_f64(),
@@ -182,6 +188,11 @@ fn view(ptr: usize, len: usize) -> Vec<f64> {
     out
 }
 
+/// A buffer of the layout, read through a view.
+fn buf(b: Buffer) -> Vec<f64> {
+    view(b.pointer, b.length)
+}
+
 /// The same through a `Uint32Array` view.
 fn view_u32(ptr: usize, len: usize) -> Vec<u32> {
     let mut out = vec![0; len];
@@ -191,7 +202,7 @@ fn view_u32(ptr: usize, len: usize) -> Vec<u32> {
     out
 }
 
-/// Every pointer getter addresses the array its copying twin returns, at every step; the
+/// Every buffer of the layout addresses the model's array it names, at every step; the
 /// crowd plays with no prediction and smaller trail rings.
 #[wasm_bindgen_test]
 fn pointers_address_the_arrays_they_name() {
@@ -199,61 +210,85 @@ fn pointers_address_the_arrays_they_name() {
         let mut pg = Playground::from_preset(name).unwrap();
         let n = pg.robot_count();
         for _ in 0..3 {
+            // The object JavaScript gets names the same buffers as the Rust layout.
+            let js = pg.layout().unwrap();
+            let l = pg.layout_now();
+            for (key, b) in [
+                ("poses", l.poses),
+                ("status", l.status),
+                ("trails", l.trails),
+                ("trailLengths", l.trail_lengths),
+                ("trailTimes", l.trail_times),
+                ("trailMinPair", l.trail_min_pair),
+                ("predicted", l.predicted),
+                ("predictedTimes", l.predicted_times),
+                ("predictedMinPair", l.predicted_min_pair),
+                ("field", l.field),
+            ] {
+                let o = get(&js, key);
+                let field = |k: &str| get(&o, k).as_f64().unwrap() as usize;
+                assert_eq!(
+                    (field("pointer"), field("length"), field("stride")),
+                    (b.pointer, b.length, b.stride),
+                    "{key}"
+                );
+            }
+            assert_eq!(get(&js, "robots").as_f64(), Some(n as f64));
             pg.step(7.0).unwrap();
-            let cap = pg.trail_capacity();
+            let cap = pg.layout_now().trail_capacity;
             assert_eq!(
-                view(pg.poses_pointer(), n * POSE_STRIDE),
-                pg.poses().to_vec()
+                view(pg.layout_now().poses.pointer, n * POSE_STRIDE),
+                pg.live().poses().to_vec()
             );
-            let status = pg.status().to_vec();
-            let seen = view(pg.status_pointer(), n * STATUS_STRIDE);
+            let status = pg.live().status().to_vec();
+            let seen = view(pg.layout_now().status.pointer, n * STATUS_STRIDE);
             // NaN marks "no virtual obstacle": compare bit patterns.
             assert!(status
                 .iter()
                 .zip(&seen)
                 .all(|(a, b)| a.to_bits() == b.to_bits()));
-            let trails = pg.trails().to_vec();
-            let seen = view(pg.trails_pointer(), n * cap * POSE_STRIDE);
+            let trails = pg.live().trails().poses().to_vec();
+            let seen = view(pg.layout_now().trails.pointer, n * cap * POSE_STRIDE);
             assert!(trails
                 .iter()
                 .zip(&seen)
                 .all(|(a, b)| a.to_bits() == b.to_bits()));
             assert_eq!(
-                view(pg.trail_times_pointer(), 1)[0],
-                pg.trail_times().to_vec()[0]
+                view(pg.layout_now().trail_times.pointer, 1)[0],
+                pg.live().trails().times()[0]
             );
-            let lens = view_u32(pg.trail_lengths_pointer(), n);
+            let lens = view_u32(pg.layout_now().trail_lengths.pointer, n);
             assert!(lens
                 .iter()
                 .enumerate()
-                .all(|(i, &l)| l as usize == pg.trail_length(i as f64).unwrap()));
-            assert_eq!(pg.trail_head(), pg.trail_recorded() % cap);
+                .all(|(i, &l)| l as usize == pg.live().trails().len_of(i)));
+            assert_eq!(
+                pg.layout_now().trail_head,
+                pg.layout_now().trail_recorded % cap
+            );
             let len = pg
                 .refresh_field(3.0, -40.0, -30.0, 40.0, 30.0, 9.0, 7.0)
                 .unwrap();
             assert_eq!(len, 9 * 7 * FIELD_STRIDE);
-            let seen = view(pg.field_pointer(), len);
-            let copy = pg
-                .sample_field(3.0, -40.0, -30.0, 40.0, 30.0, 9.0, 7.0)
-                .unwrap()
-                .to_vec();
+            let seen = view(pg.layout_now().field.pointer, len);
+            let copy = pg.live().field().to_vec();
             assert_eq!(seen, copy);
-            let samples = pg.predicted_samples();
+            let samples = pg.layout_now().predicted_samples;
             assert_eq!(
-                view(pg.predicted_pointer(), n * samples * POSE_STRIDE),
-                pg.predicted().to_vec()
+                view(pg.layout_now().predicted.pointer, n * samples * POSE_STRIDE),
+                pg.live().prediction().poses().to_vec()
             );
             assert_eq!(
-                view(pg.predicted_times_pointer(), samples),
-                pg.predicted_times().to_vec()
+                view(pg.layout_now().predicted_times.pointer, samples),
+                pg.live().prediction().times().to_vec()
             );
         }
         if n > MAX_PREDICTED_ROBOTS {
-            assert_eq!(pg.predicted_samples(), 0);
-            assert!(pg.trail_capacity() < TRAIL_CAPACITY);
+            assert_eq!(pg.layout_now().predicted_samples, 0);
+            assert!(pg.layout_now().trail_capacity < MAX_TRAIL_SAMPLES);
         } else {
-            assert!(pg.predicted_samples() >= 2);
-            assert_eq!(pg.trail_capacity(), TRAIL_CAPACITY);
+            assert!(pg.layout_now().predicted_samples >= 2);
+            assert_eq!(pg.layout_now().trail_capacity, MAX_TRAIL_SAMPLES);
         }
     }
 }
@@ -279,13 +314,16 @@ fn playground_scenarios_round_trip() {
         [3.0, 4.0, 0.5]
     );
     let again = Playground::new(text(&edited).into()).unwrap();
-    assert_eq!(again.predicted().to_vec(), pg.predicted().to_vec());
+    assert_eq!(
+        buf(again.layout_now().predicted),
+        buf(pg.layout_now().predicted).to_vec()
+    );
     // An edit through an object; at t > 0 the clock and the poses stay.
     pg.step(50.0).unwrap();
-    let poses = pg.poses().to_vec();
+    let poses = buf(pg.layout_now().poses).to_vec();
     let changed = scenario_from_json(&text(&edited).replace("\"k_v\":1.0", "\"k_v\":2.0"));
     pg.edit(changed).unwrap();
-    assert_eq!(pg.poses().to_vec(), poses);
+    assert_eq!(buf(pg.layout_now().poses).to_vec(), poses);
     assert!((pg.time() - 0.5).abs() < 1e-12);
     pg.reset();
     assert_eq!(pg.time(), 0.0);
@@ -326,11 +364,12 @@ fn playground_rejects_bad_input_with_the_field_named() {
             "n: must be a whole number".into(),
         ),
         (
-            pg.sample_field(0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 4.0).map(drop),
+            pg.refresh_field(0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 4.0)
+                .map(drop),
             "nx: must be between 2".into(),
         ),
         (
-            pg.sample_field(0.0, 0.0, 0.0, f64::NAN, 1.0, 4.0, 4.0)
+            pg.refresh_field(0.0, 0.0, 0.0, f64::NAN, 1.0, 4.0, 4.0)
                 .map(drop),
             "bounds: must be four finite numbers".into(),
         ),
