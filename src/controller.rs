@@ -62,7 +62,7 @@ pub struct Evaluation {
 }
 
 /// `atan(y/x)` with the limits the ratio takes: `±π/2` for `x = 0`, and 0 for a zero vector.
-/// Range `[−π/2, π/2]`: the robot may drive backwards (MATH-NOTES §3).
+/// Range `[−π/2, π/2]`: the robot may drive backwards (docs/notes-on-the-paper.md §3).
 #[inline]
 #[must_use]
 pub fn atan_ratio(y: f64, x: f64) -> f64 {
@@ -78,7 +78,7 @@ pub fn atan_ratio(y: f64, x: f64) -> f64 {
 }
 
 /// The smooth fade `n²/(n² + g²)` of the alignment term for a field of magnitude `n`
-/// (MATH-NOTES §3). 1 far from the goal, → 0 as the field vanishes.
+/// (docs/notes-on-the-paper.md §3). 1 far from the goal, → 0 as the field vanishes.
 #[inline]
 #[must_use]
 pub fn alignment_fade(n: f64, g: f64) -> f64 {
@@ -150,7 +150,7 @@ where
     let goal_world = rotate(theta, goal_body);
 
     // Direction of motion under the goal field: the heading, reversed when the robot would
-    // drive backwards (θ_r is measured against the motion, MATH-NOTES §4).
+    // drive backwards (θ_r is measured against the motion, docs/notes-on-the-paper.md §4).
     let motion = if goal_body.x < 0.0 {
         -heading(theta)
     } else {

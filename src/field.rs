@@ -132,7 +132,7 @@ mod tests {
     }
 
     /// The literal eq. (DVF_arbitr) equals the world field for θ_d = 0 and differs for
-    /// θ_d = π/2 by exactly the goal rotation (MATH-NOTES §1).
+    /// θ_d = π/2 by exactly the goal rotation (docs/notes-on-the-paper.md §1).
     #[test]
     fn literal_goal_frame_field_is_rotated_by_the_goal_attitude() {
         let pose = Pose::new(1.0, 2.0, 0.3);

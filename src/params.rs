@@ -1,6 +1,6 @@
 //! The method's parameters, with the defaults in one place.
 //!
-//! The paper leaves every number open (MATH-NOTES §6). The defaults below make all four of its
+//! The paper leaves every number open (docs/notes-on-the-paper.md §6). The defaults below make all four of its
 //! examples work (the presets in [`crate::presets`] use them unless they say otherwise), and
 //! satisfy the two conditions the controller needs to converge from any pose:
 //! `k_a > 2·k_ω` (no spurious equilibrium where the field is perpendicular to the heading) and
@@ -19,7 +19,7 @@ pub const DEFAULT_BARRIER_RATE: f64 = 5.0;
 pub enum Avoidance {
     /// As the paper writes it: inside the avoidance range a robot always blends in the
     /// circular field of the virtual obstacle. Robots that enter each other's ring can circle
-    /// forever (MATH-NOTES §5).
+    /// forever (docs/notes-on-the-paper.md §5).
     Paper,
     /// The paper's field with the exit the obstacle field already has (eq. `eq_ob_avoid_VF`,
     /// case `θ_r ≥ π/2`): a robot whose motion under its goal field leads away from the virtual
@@ -61,7 +61,7 @@ pub struct Params {
     /// … and its heading error at most this (rad).
     pub tol_heading: f64,
     /// `g`: field magnitude below which the alignment term fades out, as
-    /// `k_a·|Γ|²/(|Γ|² + g²)·atan(Γᴮʸ/Γᴮˣ)` (MATH-NOTES §3: at the goal the direction of a
+    /// `k_a·|Γ|²/(|Γ|² + g²)·atan(Γᴮʸ/Γᴮˣ)` (docs/notes-on-the-paper.md §3: at the goal the direction of a
     /// vanishing field is round-off). Length/s, far below `tol_position`. Not in the paper.
     pub align_fade: f64,
     /// `"exit"` (default) or `"paper"`: see [`Avoidance`].

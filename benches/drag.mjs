@@ -1,0 +1,86 @@
+// The drag benchmark: milliseconds of work per pointer move when one robot of the 10,000-robot
+// crowd is dragged (the facade's moveRobot, which checks what the move touches and updates the
+// model in place), in Node on the RELEASE wasm package. Paused at t = 0 (editing the starts) and
+// paused at t > 0 (editing where the robots are now). Prints one JSON line per case with the
+// median and the 90th percentile; `--budget MS` makes it exit 1 when a median exceeds MS (make
+// bench-wasm passes 5). Not part of `make test`: a time is not behaviour.
+//
+//   make build-wasm && node benches/drag.mjs [--robots 10000] [--moves 200] [--budget 5]
+
+import { readFileSync } from 'node:fs';
+import { performance } from 'node:perf_hooks';
+import { fileURLToPath } from 'node:url';
+import init, { Playground } from '../www/pkg/dvf.js';
+
+/** The value after `--name` as a number, or `fallback`. */
+function option(name, fallback) {
+  const at = process.argv.indexOf(`--${name}`);
+  if (at < 0) return fallback;
+  const value = Number(process.argv[at + 1]);
+  if (!Number.isFinite(value) || value < 0) {
+    console.error(`${name}: expected a non-negative number, not ${process.argv[at + 1]}`);
+    process.exit(2);
+  }
+  return value;
+}
+
+const robots = option('robots', 10_000);
+const moves = option('moves', 200);
+const budget = option('budget', Number.POSITIVE_INFINITY);
+
+const wasmPath = fileURLToPath(new URL('../www/pkg/dvf_bg.wasm', import.meta.url));
+const { memory } = await init({ module_or_path: readFileSync(wasmPath) });
+
+/** The q-quantile of `values` (nearest rank). */
+function quantile(values, q) {
+  const s = [...values].sort((a, b) => a - b);
+  return s[Math.min(s.length - 1, Math.max(0, Math.ceil(q * s.length) - 1))];
+}
+
+let failed = false;
+for (const ahead of [0, 50]) {
+  const pg = Playground.fromPreset(`crowd-${robots}`);
+  if (ahead > 0) pg.step(ahead);
+  // Robot 0 of the crowd sits on the circle; it is dragged along a short arc inward and back,
+  // a small step per move as a pointer gives, from where it is now.
+  const { poses } = pg.layout();
+  const [x0, y0, theta] = new Float64Array(memory.buffer, poses.pointer, poses.stride);
+  const times = [];
+  let refused = 0;
+  for (let k = 0; k < moves; k++) {
+    const s = 0.5 * Math.sin((2 * Math.PI * k) / moves);
+    const t0 = performance.now();
+    try {
+      pg.moveRobot(0, x0 - s, y0 + 0.25 * s, theta);
+    } catch {
+      refused += 1;
+    }
+    times.push(performance.now() - t0);
+  }
+  // The whole-scenario path the fine-grained edit replaces (serialise, validate, rebuild), for
+  // the ratio: a few moves, it is slow.
+  const whole = [];
+  const scenario = pg.scenario();
+  for (let k = 0; k < Math.min(10, moves); k++) {
+    scenario.robots[0].start = [x0 - 0.01 * k, y0, theta];
+    const t0 = performance.now();
+    pg.edit(scenario);
+    whole.push(performance.now() - t0);
+  }
+  const median = quantile(times, 0.5);
+  const line = {
+    robots,
+    t: pg.time,
+    moves,
+    refused,
+    ms_per_move_median: Number(median.toFixed(3)),
+    ms_per_move_p90: Number(quantile(times, 0.9).toFixed(3)),
+    ms_per_whole_edit_median: Number(quantile(whole, 0.5).toFixed(3)),
+  };
+  if (Number.isFinite(budget)) line.budget_ms = budget;
+  console.log(JSON.stringify(line));
+  if (median > budget) failed = true;
+  pg.free();
+}
+
+process.exit(failed ? 1 : 0);
