@@ -24,12 +24,14 @@ lint: lint-rust lint-js
 lint-rust:
 	cargo fmt --check
 	cargo clippy --all-targets -- -D warnings
+	cargo clippy --target wasm32-unknown-unknown --lib --tests -- -D warnings
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps
 
 # The JavaScript of www/ and tests/e2e/: one linter and formatter, and the declarations
 # type-checked against the code.
 lint-js: tools
-	@true
+	biome ci
+	tsc --noEmit -p www/tsconfig.json
 
 test-native:
 	cargo test
@@ -39,7 +41,7 @@ test-node: tools
 	wasm-pack test --node
 
 test-browser: tools
-	wasm-pack test --headless --chrome
+	WASM_BINDGEN_USE_BROWSER=1 wasm-pack test --headless --chrome
 
 # The pages as users load them: the release package, served, driven in Chromium (screenshots and
 # figures in test-results/).
@@ -52,7 +54,7 @@ test: tools lint test-native test-node test-browser test-e2e
 # The README's picture (docs/playground.png), from the release build: a separate target, so that
 # `make test` leaves the tree as it found it.
 picture: build-wasm
-	@true
+	node tests/e2e/picture.mjs
 
 # Benchmarks and their budgets, not part of `make test`: native and wasm ms per step of the crowd
 # at 1,000 and 10,000 robots (alternating, so that both see the same machine load), the drag of
@@ -69,7 +71,7 @@ bench-native: build-wasm
 	done
 
 bench-wasm: build-wasm
-	@true
+	node benches/drag.mjs --robots 10000 --moves 200 --budget 5
 
 bench-browser: build-wasm
-	@true
+	node tests/e2e/bench-browser.mjs

@@ -2,9 +2,10 @@
 // address's fragment (#s=<scenario JSON>, or #<preset name>) so that a copied link reopens it.
 
 import './dvf-playground.js';
-import { MAX_SCENARIO_BYTES, fragmentFor, parseFragment } from './io.js';
+import { fragmentFor, MAX_SCENARIO_BYTES, parseFragment } from './io.js';
+import { messageOf } from './playground/message.js';
 
-const playground = document.getElementById('playground');
+const playground = /** @type {import('./dvf-playground.js').DvfPlayground} */ (document.getElementById('playground'));
 /** The fragment this page last wrote, so that its own hashchange is not read back. */
 let written = location.hash;
 
@@ -17,7 +18,7 @@ function openFragment(hash) {
     else if (wanted.kind === 'preset' && !playground.loadPreset(wanted.name)) return;
     if (wanted.kind !== 'none') playground.showMessage('');
   } catch (e) {
-    playground.showMessage(`This link does not hold a scenario the playground can open. ${e.message ?? e}`);
+    playground.showMessage(`This link does not hold a scenario the playground can open. ${messageOf(e)}`);
   }
 }
 

@@ -56,6 +56,15 @@ pub const MAX_LIVE_STEPS: usize = 1_000_000;
 pub const POSE_STRIDE: usize = 3;
 /// Values per robot status: `v, ω, Π ς_i, ς_c, vo_x, vo_y`.
 pub const STATUS_STRIDE: usize = 6;
+/// The names of a status record's values, in order (the page's names for them).
+pub const STATUS_FIELDS: [&str; STATUS_STRIDE] = [
+    "v",
+    "omega",
+    "obstacleKeep",
+    "robotKeep",
+    "virtualX",
+    "virtualY",
+];
 
 /// A live, editable simulation and the buffers drawn from it.
 #[derive(Clone, Debug)]
@@ -237,8 +246,9 @@ fn record_every(s: &Scenario, cap: usize) -> usize {
 }
 
 /// The smallest distance between two interacting robots of a simulation (NaN when there is no
-/// pair), through [`min_pair_distance`] (a scan below [`crate::grid::FEW_ROBOTS`], the grid
-/// above), with its buffers kept from call to call.
+/// pair): from the simulation's own neighbour lists when they hold a pair
+/// ([`Simulation::min_listed_pair_distance`]), else through [`min_pair_distance`] (a scan below
+/// [`crate::grid::FEW_ROBOTS`], the grid above), with its buffers kept from call to call.
 #[derive(Clone, Debug, Default)]
 pub struct PairDistance {
     positions: Vec<DVec2>,
@@ -253,6 +263,9 @@ impl PairDistance {
         let r = sim.robots();
         if sim.independent() || r.len() < 2 {
             return f64::NAN;
+        }
+        if let Some(m) = sim.min_listed_pair_distance() {
+            return m;
         }
         self.positions.clear();
         self.positions.extend(r.iter().map(|r| r.pose.p));

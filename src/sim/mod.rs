@@ -358,6 +358,27 @@ impl Simulation {
         });
     }
 
+    /// The smallest distance between two robots now, when the neighbour lists hold it: the
+    /// lists (always built for the current positions) hold every pair within
+    /// `max(R_s, 2·r_ij)`, so when some pair is listed their minimum is the minimum over all
+    /// pairs (the same value as a scan). `None` when there are no lists (independent robots,
+    /// [`Neighbourhood::AllPairs`]) or no pair within their reach.
+    #[must_use]
+    pub fn min_listed_pair_distance(&self) -> Option<f64> {
+        if !self.listed() {
+            return None;
+        }
+        let mut m = f64::INFINITY;
+        for (i, r) in self.robots.iter().enumerate() {
+            for &j in self.near.of(i) {
+                if j as usize > i {
+                    m = m.min(r.pose.p.distance(self.robots[j as usize].pose.p));
+                }
+            }
+        }
+        m.is_finite().then_some(m)
+    }
+
     /// Puts robot `i` at `pose`, bound for `goal`, in a simulation that has taken no step yet:
     /// afterwards it holds the same bits as [`Simulation::new`] of the scenario with that robot
     /// there, at the cost of the robots that sense it (where it was and where it is now) and an

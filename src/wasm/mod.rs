@@ -81,9 +81,10 @@ pub fn check_scenario(scenario: JsValue) -> Result<JsValue, JsError> {
     to_js(&s)
 }
 
-/// The playground's layout constants as an object, so that the page reads them rather than
+/// The playground's limits and records as an object, so that the page reads them rather than
 /// copying them: `{trailCapacity, predictionSamples, curvePoints, maxGridSide, maxCurveSide,
-/// maxRobots, maxPredictedRobots, crowdMax}` (`trailCapacity` is the largest; a scene's own is
+/// maxRobots, maxPredictedRobots, crowdMax, poseStride, statusStride, statusFields, fieldStride,
+/// curveStride, sampleStride}` (`statusFields` names the values of a status record in order) (`trailCapacity` is the largest; a scene's own is
 /// [`Playground::trail_capacity`]).
 ///
 /// # Errors
@@ -101,6 +102,12 @@ pub fn playground_limits() -> Result<JsValue, JsError> {
         max_robots: usize,
         max_predicted_robots: usize,
         crowd_max: usize,
+        pose_stride: usize,
+        status_stride: usize,
+        status_fields: [&'static str; live::STATUS_STRIDE],
+        field_stride: usize,
+        curve_stride: usize,
+        sample_stride: usize,
     }
     to_js(&Limits {
         trail_capacity: live::MAX_TRAIL_SAMPLES,
@@ -111,5 +118,11 @@ pub fn playground_limits() -> Result<JsValue, JsError> {
         max_robots: live::MAX_LIVE_ROBOTS,
         max_predicted_robots: live::MAX_PREDICTED_ROBOTS,
         crowd_max: presets::CROWD_MAX,
+        pose_stride: live::POSE_STRIDE,
+        status_stride: live::STATUS_STRIDE,
+        status_fields: live::STATUS_FIELDS,
+        field_stride: live::FIELD_STRIDE,
+        curve_stride: live::CURVE_STRIDE,
+        sample_stride: SAMPLE_STRIDE,
     })
 }

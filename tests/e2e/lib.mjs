@@ -216,8 +216,8 @@ export async function showReadmeScene(page, selector = 'dvf-playground') {
  * Drags with the mouse from page point (x, y), `moves` moves of (dx, dy) each, and keeps the
  * button down until the moves are drawn; then releases it. Returns what the page did in the
  * meantime: the animation frames the browser produced (`frames`, over `span` s, the longest
- * gap `worst` ms between two), how often the playground redrew (`redraws`), its slowest frame
- * and its last edit (ms).
+ * gap `worst` ms between two), how often the playground redrew (`redraws`), the work of each
+ * of its frames (`work`, ms), its slowest frame and its last edit (ms).
  */
 export async function drag(page, [x, y], moves, [dx, dy], selector = 'dvf-playground') {
   await page.mouse.move(x, y);
@@ -235,6 +235,7 @@ export async function drag(page, [x, y], moves, [dx, dy], selector = 'dvf-playgr
     const el = document.querySelector(sel);
     el.stats.maxFrameWorkMs = 0;
     window.redraws0 = el.stats.frames;
+    window.work0 = el.stats.workCount;
   }, selector);
   for (let k = 1; k <= moves; k++) await page.mouse.move(x + k * dx, y + k * dy);
   await frames(page);
@@ -244,11 +245,15 @@ export async function drag(page, [x, y], moves, [dx, dy], selector = 'dvf-playgr
     let worst = 0;
     for (let k = 1; k < t.length; k++) worst = Math.max(worst, t[k] - t[k - 1]);
     const el = document.querySelector(sel);
+    const { work, workCount } = el.stats;
+    const drawn = [];
+    for (let k = Math.max(window.work0, workCount - work.length); k < workCount; k++) drawn.push(work[k % work.length]);
     return {
       frames: t.length,
       span: (t[t.length - 1] - t[0]) / 1000,
       worst,
       redraws: el.stats.frames - window.redraws0,
+      work: drawn,
       maxWork: el.stats.maxFrameWorkMs,
       edit: el.stats.lastEditMs,
     };

@@ -98,10 +98,30 @@ await run(async ({ base, newPage }) => {
   const scroll = await page.evaluate(() => [window.scrollX, window.scrollY]);
   const fx = from.x - scroll[0];
   const fy = from.y - scroll[1];
+  // The simulation's whole scenario is read back once per drag, not once per pointer move.
+  await page.evaluate((sel) => {
+    const pg = document.querySelector(sel).pg;
+    window.wholeScenario = { reads: 0, edits: 0 };
+    for (const [name, count] of [
+      ['scenario', 'reads'],
+      ['edit', 'edits'],
+    ]) {
+      const call = pg[name];
+      pg[name] = (...args) => {
+        window.wholeScenario[count] += 1;
+        return call.apply(pg, args);
+      };
+    }
+  }, PG);
   const dragged = await drag(page, [fx, fy], DRAG_MOVES, [1.5, -1.2]);
   check(
     dragged.redraws >= 2,
     `the playground redraws while the pointer moves (${dragged.redraws} times for ${DRAG_MOVES} moves)`,
+  );
+  const whole = await page.evaluate(() => window.wholeScenario);
+  check(
+    whole.reads === 1 && whole.edits === 0,
+    `a drag of ${DRAG_MOVES} moves reads the whole scenario back once (${whole.reads}) and replaces it never (${whole.edits})`,
   );
   await page.screenshot({ path: join(RESULTS, 'main-after-drag.png') });
   const after = await scenarioOf(page);

@@ -1,8 +1,10 @@
-// Time plots beside the canvas: the minimum distance between two robots with the safe
-// distance marked (the paper's last figure), and the selected robot's position and heading
-// errors. The past comes from the trail rings (solid), the future from the prediction (dashed).
+// The plots panel: time plots beside the canvas, the minimum distance between two robots with
+// the safe distance marked (the paper's last figure), and the inspected robot's position and
+// heading errors. The past comes from the trail rings (solid), the future from the prediction
+// (dashed).
 
-import { POSE_STRIDE } from './render.js';
+import { POSE_STRIDE } from '../playground/wasm-views.js';
+import { fitCanvas } from '../render/canvas.js';
 
 const PLOT_FONT = '10.5px system-ui, sans-serif';
 const PLOT_TEXT = '#4b5563';
@@ -11,9 +13,13 @@ const SAFE_COLOUR = '#dc2626';
 const NOW_COLOUR = '#2563eb';
 /** Inner margins of a plot (CSS px): left holds the y labels, bottom the time labels. */
 const PLOT_MARGIN_PX = { left: 34, right: 8, top: 16, bottom: 16 };
-export const PAIR_COLOUR = '#111827';
-export const POSITION_COLOUR = '#0f766e';
-export const HEADING_COLOUR = '#b45309';
+const PAIR_COLOUR = '#111827';
+const POSITION_COLOUR = '#0f766e';
+const HEADING_COLOUR = '#b45309';
+/** Dashes of the predicted part of a line and of the safe distance. */
+const DASH_PX = [4, 3];
+/** Space between the two plots (CSS px). */
+const PLOT_GAP_PX = 8;
 
 /**
  * A series of points in two reusable typed arrays: `count` points `(t[k], v[k])`. Filled
@@ -54,7 +60,7 @@ class Series {
 }
 
 /** The six series of the two plots, reused from frame to frame. */
-export function makeSeries() {
+function makeSeries() {
   const names = ['pastPair', 'futurePair', 'pastPos', 'futurePos', 'pastHead', 'futureHead'];
   return Object.fromEntries(names.map((n) => [n, new Series()]));
 }
@@ -68,7 +74,7 @@ function wrap(a) {
  * Fills `series` (from makeSeries) for the two plots from what the element read from wasm this
  * frame: the past from the rings (oldest first, NaN skipped), the future from the prediction.
  */
-export function plotSeries(scene, robot, series) {
+function plotSeries(scene, robot, series) {
   const cap = scene.trailCapacity;
   const times = scene.trailTimes;
   const head = scene.trailHead;
@@ -111,12 +117,22 @@ export function plotSeries(scene, robot, series) {
 }
 
 /**
- * Draws one plot on `ctx` in the box (x, y, w, h): `lines` is a list of
- * `{points, colour, dashed, axis}` (`points` a series of plotSeries; axis 'left' or 'right'),
- * `hline` an optional
- * `{value, colour, label}` on the left axis.
+ * @typedef {{points: Series, colour: string, axis: 'left' | 'right', dashed?: boolean}} Line
+ * @typedef {{
+ *   title: string, duration: number, time: number, lines: Line[],
+ *   hline?: {value: number, colour?: string, label: string} | null,
+ *   leftLabel?: string, rightLabel?: string,
+ * }} Plot
  */
-export function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, rightLabel }) {
+
+/**
+ * Draws one plot on `ctx` in the box (x, y, w, h): `lines` (`points` a series of plotSeries),
+ * `hline` an optional line on the left axis.
+ * @param {CanvasRenderingContext2D} ctx
+ * @param {{x: number, y: number, w: number, h: number}} box
+ * @param {Plot} plot
+ */
+function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, rightLabel }) {
   const { x, y, w, h } = box;
   const px0 = x + PLOT_MARGIN_PX.left;
   const px1 = x + w - PLOT_MARGIN_PX.right - (rightLabel ? 26 : 0);
@@ -168,7 +184,7 @@ export function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLa
     ctx.beginPath();
     ctx.moveTo(px0, hy);
     ctx.lineTo(px1, hy);
-    ctx.setLineDash([4, 3]);
+    ctx.setLineDash(DASH_PX);
     ctx.strokeStyle = hline.colour ?? SAFE_COLOUR;
     ctx.stroke();
     ctx.setLineDash([]);
@@ -187,7 +203,7 @@ export function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLa
     ctx.beginPath();
     ctx.moveTo(sx(t[0]), sy(v[0], l.axis));
     for (let k = 1; k < count; k++) ctx.lineTo(sx(t[k]), sy(v[k], l.axis));
-    ctx.setLineDash(l.dashed ? [4, 3] : []);
+    ctx.setLineDash(l.dashed ? DASH_PX : []);
     ctx.globalAlpha = l.dashed ? 0.6 : 1;
     ctx.lineWidth = 1.5;
     ctx.strokeStyle = l.colour;
@@ -215,4 +231,56 @@ function fmt(v) {
   return Math.abs(v) >= 10 || Number.isInteger(v) ? v.toFixed(0) : v.toPrecision(2);
 }
 
-export { SAFE_COLOUR };
+/** The two plots of one playground on their canvas, with their series kept between frames. */
+export class PlotsPanel {
+  /** @param {HTMLCanvasElement} canvas */
+  constructor(canvas) {
+    this.canvas = canvas;
+    this.series = makeSeries();
+  }
+
+  /** Draws both plots for `scene` (render/scene.js) and inspected robot `robot`. */
+  draw(scene, robot) {
+    const { ctx, width, height } = fitCanvas(this.canvas);
+    ctx.clearRect(0, 0, width, height);
+    const s = scene.scenario;
+    const series = plotSeries(scene, robot, this.series);
+    const half = height / 2;
+    const gap = PLOT_GAP_PX / 2;
+    /** @type {Line[]} */
+    const pairLines =
+      s.independent || s.robots.length < 2
+        ? []
+        : [
+            { points: series.pastPair, colour: PAIR_COLOUR, axis: 'left' },
+            { points: series.futurePair, colour: PAIR_COLOUR, axis: 'left', dashed: true },
+          ];
+    drawPlot(
+      ctx,
+      { x: 0, y: 0, w: width, h: half - gap },
+      {
+        title: 'min distance between two robots (m)',
+        duration: scene.duration,
+        time: scene.time,
+        lines: pairLines,
+        hline: pairLines.length ? { value: 2 * s.params.safe_radius, colour: SAFE_COLOUR, label: '2·r_ij' } : null,
+      },
+    );
+    drawPlot(
+      ctx,
+      { x: 0, y: half + gap, w: width, h: half - gap },
+      {
+        title: `robot ${robot + 1}: position error (m), heading error (rad)`,
+        duration: scene.duration,
+        time: scene.time,
+        rightLabel: 'rad',
+        lines: [
+          { points: series.pastPos, colour: POSITION_COLOUR, axis: 'left' },
+          { points: series.futurePos, colour: POSITION_COLOUR, axis: 'left', dashed: true },
+          { points: series.pastHead, colour: HEADING_COLOUR, axis: 'right' },
+          { points: series.futureHead, colour: HEADING_COLOUR, axis: 'right', dashed: true },
+        ],
+      },
+    );
+  }
+}

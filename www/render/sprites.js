@@ -1,4 +1,4 @@
-// Crowds drawn by stamping pre-rasterised glyphs into a pixel buffer.
+// Sprites: crowds drawn by stamping pre-rasterised glyphs into a pixel buffer.
 //
 // Measured in Chromium without a GPU (the headless test browser, and many laptops' fallback):
 // every Canvas 2D path call costs about half a microsecond, so 10,000 robot triangles cost
@@ -22,7 +22,7 @@ class Sprite {
 }
 
 /** A pixel layer for crowds: `begin`, any number of `stamp`s, `end`. */
-export class GlyphLayer {
+export class SpriteLayer {
   constructor() {
     this.canvas = document.createElement('canvas');
     this.ctx = this.canvas.getContext('2d');

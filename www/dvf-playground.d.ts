@@ -1,0 +1,281 @@
+// Types of <dvf-playground> (dvf-playground.js) and of the JSON it speaks: the scenario format
+// (src/scenario.rs, src/params.rs, src/obstacle.rs) and the report of a run (src/sim/report.rs,
+// what `dvf simulate` prints and `Run.report()` returns). Lengths in metres, angles in
+// radians, times in seconds.
+
+/** A pose `[x, y, θ]`: position (m) and heading (rad, counter-clockwise from +x). */
+export type Pose = [x: number, y: number, theta: number];
+
+/** How robots avoid each other (`params.avoidance`). */
+export type Avoidance =
+  /** As the paper writes it: inside the avoidance range a robot always circles the virtual obstacle. */
+  | 'paper'
+  /** The paper's field with an exit: a robot whose goal field leads away from the virtual obstacle follows it. */
+  | 'exit';
+
+/** The method's parameters; a missing key takes its default. */
+export interface Params {
+  /** `k_v > 0`: gain of the forward speed on the field (1/s). Default 1. */
+  k_v: number;
+  /** `k_ω > 0`: gain of the attitude feedback `−k_ω θ̃` (1/s). Default 1. */
+  k_omega: number;
+  /** `k_a > 0`: gain of the alignment term (1/s). Default 10. */
+  k_a: number;
+  /** `ε > 0`: width of the transition band of `ς` (m). Default 1. */
+  transition_width: number;
+  /** `v_c > 0`: the speed of robots circling a virtual obstacle (m/s). Default 2. */
+  avoid_speed: number;
+  /** `R_c`: radius of the avoidance ring about a virtual obstacle (m). Default 3. */
+  avoid_radius: number;
+  /** `r_ij`: a robot's safe radius; closer than `2·r_ij` is a collision (m). Default 1. */
+  safe_radius: number;
+  /** `R_s`: sensing radius (m). Default 20. */
+  sense_radius: number;
+  /** `|v| ≤ v_max` when set (m/s); null: no saturation (the default). */
+  v_max: number | null;
+  /** `|ω| ≤ ω_max` when set (rad/s); null: no saturation (the default). */
+  omega_max: number | null;
+  /** A robot has converged when its position error is at most this (m). Default 0.05. */
+  tol_position: number;
+  /** … and its heading error at most this (rad). Default 0.02. */
+  tol_heading: number;
+  /** Field magnitude below which the alignment term fades out (m/s). Default 1e-6. */
+  align_fade: number;
+  /** Default `exit`. */
+  avoidance: Avoidance;
+  /** `α`: rate of the safety barrier (1/s), `α·dt ≤ 1/2`; null turns it off. Default 5. */
+  barrier_rate: number | null;
+}
+
+/** One robot: where it starts and the pose it must reach. */
+export interface RobotSpec {
+  /** `[x, y, θ]` at time 0. */
+  start: Pose;
+  /** `[x_d, y_d, θ_d]`. */
+  goal: Pose;
+}
+
+/** A circular obstacle. */
+export interface Obstacle {
+  /** Centre `[x, y]`. */
+  center: [x: number, y: number];
+  /** Radius `r_o > 0` of the disc the robots must stay out of. */
+  radius: number;
+  /** Radius `R_o > r_o` of the influence ring. */
+  influence: number;
+}
+
+/**
+ * A scenario as the playground returns it (`scenario()`, the `change` event's page, the
+ * exported JSON): every default filled in and the bounds resolved.
+ */
+export interface Scenario {
+  /** Free text, shown to people, never interpreted (default "untitled"). */
+  name: string;
+  /** `[xmin, ymin, xmax, ymax]`: the area drawn (default: the box around every start, goal and ring, with a margin). */
+  bounds: [xmin: number, ymin: number, xmax: number, ymax: number];
+  /** Simulated seconds (default 40). */
+  duration: number;
+  /** Step size (s, default 0.01). */
+  dt: number;
+  params: Params;
+  /** Robots run independently (they neither sense nor avoid each other); omitted when false. */
+  independent?: boolean;
+  /** At least one robot, at most 10,000. */
+  robots: RobotSpec[];
+  obstacles: Obstacle[];
+}
+
+/** A scenario as `load()` and the scenario files accept it: only `robots` is required. */
+export type ScenarioInput = Partial<Omit<Scenario, 'params' | 'robots'>> & {
+  params?: Partial<Params>;
+  robots: RobotSpec[];
+};
+
+/** Per-robot outcome in a {@link Report}. */
+export interface RobotReport {
+  /** `[x, y, θ]` at the end. */
+  final: Pose;
+  /** Distance to the goal position at the end (m). */
+  position_error: number;
+  /** `|wrap(θ − θ_d)|` at the end (rad). */
+  heading_error: number;
+  /** The time after which the robot stayed within the tolerances to the end; null if it ended outside. */
+  converged_at: number | null;
+}
+
+/** The outcome of a run (what `dvf simulate` prints). */
+export interface Report {
+  name: string;
+  /** Simulated time at the end (s). */
+  time: number;
+  /** Steps taken. */
+  steps: number;
+  robots: RobotReport[];
+  /** Smallest distance between two robots at any sampled time; null for one robot or independent runs. */
+  min_pair_distance: number | null;
+  /** Smallest distance from a robot to the surface of an obstacle it senses; null when none came that close. */
+  min_obstacle_clearance: number | null;
+  /** Events: each time two robots come closer than `2·safe_radius`, and each time a robot enters an obstacle disc. */
+  violations: number;
+}
+
+/** What a `change` event's `detail.kind` says happened. */
+export type ChangeKind =
+  | 'robot'
+  | 'robot-heading'
+  | 'goal'
+  | 'goal-heading'
+  | 'obstacle'
+  | 'obstacle-radius'
+  | 'obstacle-influence'
+  | 'add-robot'
+  | 'add-obstacle'
+  | 'delete'
+  | 'params'
+  | 'preset'
+  | 'import'
+  | 'undo'
+  | 'redo';
+
+/** The element's attributes (all optional; see README.md, "Embedding"). */
+export interface DvfPlaygroundAttributes {
+  /** A preset name (default: the crate's default preset); `crowd-N` included. */
+  preset?: string;
+  /** URL of a scenario JSON file; takes precedence over `preset`. */
+  src?: string;
+  /** Present: the full toolbar and side panels. */
+  controls?: boolean;
+  /** Present: start playing once loaded. */
+  autoplay?: boolean;
+  /** The field overlay (default `arrows`). */
+  field?: 'arrows' | 'curves' | 'none';
+  /** θ(0) of the integral curves, in degrees (default 90). */
+  theta0?: number;
+  /** Present: draw the sensing circles `R_s`. */
+  sensing?: boolean;
+}
+
+/** What a frame reads of the live simulation: counters, and arrays as views into wasm memory. */
+export interface LiveFrame {
+  /** Simulated time now (s). */
+  readonly time: number;
+  /** The scenario's duration (s). */
+  readonly duration: number;
+  /** Samples per robot in the trail rings. */
+  readonly trailCapacity: number;
+  /** Samples per robot of the prediction (0 without one). */
+  readonly predictedSamples: number;
+  /** `[robots · 3]`: x, y, θ now. */
+  readonly poses: Float64Array;
+  /** `[robots · 6]`: v, ω, the obstacle keep, the robot keep, the virtual obstacle's x, y (NaN: none). */
+  readonly status: Float64Array;
+  /** `[robots · trailCapacity · 3]`: one ring of past poses per robot. */
+  readonly trails: Float64Array;
+  /** `[robots · predictedSamples · 3]`: the predicted poses from now on. */
+  readonly predicted: Float64Array;
+}
+
+/** The camera: world centre (m) and scale (CSS px per m). */
+export interface CameraState {
+  cx: number;
+  cy: number;
+  scale: number;
+}
+
+/** The element's frame statistics (diagnostics for the tests and benchmarks). */
+export interface FrameStats {
+  /** Frames drawn. */
+  frames: number;
+  /** When the first frame was drawn (ms since the page's time origin). */
+  firstFrameMs: number | undefined;
+  /** Wall time of the last edit with its prediction (ms). */
+  lastEditMs: number;
+  /** Work of the last frame and of the slowest one (ms). */
+  frameWorkMs: number;
+  maxFrameWorkMs: number;
+  /** The work of the last frames (ms), a ring written at `workCount % work.length`. */
+  work: Float64Array;
+  workCount: number;
+  /** Set: a frame's work includes the rasterisation of its drawing. */
+  rasterInWork: boolean;
+}
+
+/** `<dvf-playground>`: a live DVF simulation with its controls. */
+export declare class DvfPlayground extends HTMLElement {
+  /**
+   * Loads a scenario (object or JSON text) as a new document: t = 0, view fitted, undo cleared.
+   * @throws Error naming the offending field; the scene is kept then.
+   */
+  load(scenario: ScenarioInput | string): void;
+  /** Loads a preset by name (`crowd-N` included); on a bad name shows the message, keeps the scene and returns false. */
+  loadPreset(name: string): boolean;
+  /** The current scenario (edits included) as a plain object; null before the first scene. */
+  scenario(): Scenario | null;
+  /** The preset shown, or null once the scene has been edited or imported. */
+  presetName(): string | null;
+  /** Plays the clock (from t = 0 again after the end). */
+  play(): void;
+  pause(): void;
+  /** Back to t = 0 at the scenario's starts, trails cleared. */
+  reset(): void;
+  /**
+   * Advances `n` steps of dt and pauses; returns the steps taken.
+   * @throws Error for an `n` that is not a whole number from 0 to 10⁶.
+   */
+  step(n?: number): number;
+  /** Page coordinates (CSS px, like `pageX`/`pageY`) of world point (x, y) in metres. */
+  worldToScreen(x: number, y: number): { x: number; y: number };
+  /** Shows `text` (as text, never HTML) in the message bar; an empty text hides it. */
+  showMessage(text: string): void;
+  /** Resolves once the first scene is shown. */
+  readonly loaded: Promise<void>;
+
+  // Diagnostics for the end-to-end tests and benchmarks: not a stable API.
+  /** The wasm `Playground` (read only). */
+  readonly pg: import('./pkg/dvf.js').Playground | null;
+  /** What a frame reads, as views into wasm memory; null before the first scene. */
+  readonly cache: LiveFrame | null;
+  /** The trail rings (`cache.trails`). */
+  trailsView(): Float64Array | null;
+  /** The world↔screen maps of the canvas now. */
+  view(): {
+    scale: number;
+    width: number;
+    height: number;
+    sx(x: number): number;
+    sy(y: number): number;
+    wx(px: number): number;
+    wy(py: number): number;
+  };
+  readonly camera: CameraState | null;
+  readonly stats: FrameStats | null;
+  /** Mean wall time of one step (ms). */
+  readonly stepMs: number | null;
+  readonly fieldMode: 'arrows' | 'curves' | 'none' | null;
+  /** The inspected robot. */
+  focusRobot: number | null;
+
+  addEventListener<K extends keyof DvfPlaygroundEventMap>(
+    type: K,
+    listener: (this: DvfPlayground, event: DvfPlaygroundEventMap[K]) => unknown,
+    options?: boolean | AddEventListenerOptions,
+  ): void;
+  addEventListener(
+    type: string,
+    listener: EventListenerOrEventListenerObject,
+    options?: boolean | AddEventListenerOptions,
+  ): void;
+}
+
+/** The element's events. */
+export interface DvfPlaygroundEventMap extends HTMLElementEventMap {
+  /** After each edit. */
+  change: CustomEvent<{ kind: ChangeKind }>;
+}
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'dvf-playground': DvfPlayground;
+  }
+}

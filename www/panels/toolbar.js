@@ -1,0 +1,154 @@
+// The toolbar of a playground: preset menu (with the crowd's N box), play, step, reset and
+// speed, undo and redo, add and delete, the field overlay with θ(0), the sensing circles and
+// fit, and the exports and import. Without the `controls` attribute the stylesheet hides all
+// but play, step, reset and the field menu.
+
+import { downloadCanvasPng, downloadScenarioJson, downloadTrajectoriesCsv, readScenarioFile } from '../io.js';
+import { addObstacleInView, addRobotInView, deleteSelection } from '../playground/actions.js';
+import { DEFAULT_SPEED, SPEEDS } from '../playground/loop.js';
+import { messageOf } from '../playground/message.js';
+import { el } from './dom.js';
+
+/** A crowd loaded from the menu has this many robots unless the N box says otherwise. */
+const DEFAULT_CROWD = 1000;
+/** Crowds are the presets `crowd-N`. */
+const CROWD_PREFIX = 'crowd-';
+/** The menu's entry for a crowd. */
+const CROWD_OPTION = 'crowd';
+
+export class Toolbar {
+  /** @param {import('../playground/controller.js').Controller} controller */
+  constructor(controller) {
+    const c = controller;
+    const $ = c.$;
+    this.c = c;
+    const speed = $('speed');
+    for (const s of SPEEDS) {
+      const o = el('option', `${s}×`);
+      o.value = String(s);
+      speed.append(o);
+    }
+    speed.value = String(DEFAULT_SPEED);
+    speed.addEventListener('change', () => {
+      c.loop.speed = Number(speed.value);
+    });
+    $('preset').addEventListener('change', () => {
+      if ($('preset').value === CROWD_OPTION) this.loadCrowd();
+      else c.loadPreset($('preset').value, { edit: true });
+    });
+    $('crowd-n').addEventListener('change', () => this.loadCrowd());
+    $('play').addEventListener('click', () => c.togglePlay());
+    $('step').addEventListener('click', () => c.stepTime());
+    $('reset').addEventListener('click', () => c.reset());
+    $('undo').addEventListener('click', () => c.undo());
+    $('redo').addEventListener('click', () => c.redo());
+    $('add-robot').addEventListener('click', () => addRobotInView(c));
+    $('add-obstacle').addEventListener('click', () => addObstacleInView(c));
+    $('delete').addEventListener('click', () => deleteSelection(c));
+    $('fit').addEventListener('click', () => c.fit());
+    $('field').addEventListener('change', () => {
+      c.fieldMode = $('field').value;
+      c.requestDraw();
+    });
+    $('theta0').addEventListener('change', () => {
+      const v = Number($('theta0').value);
+      if (Number.isFinite(v) && $('theta0').value.trim() !== '') c.theta0Deg = v;
+      else $('theta0').value = String(c.theta0Deg);
+      c.requestDraw();
+    });
+    $('sensing').addEventListener('change', () => {
+      c.showSensing = $('sensing').checked;
+      c.requestDraw();
+    });
+    $('export-json').addEventListener('click', () => downloadScenarioJson(c.scenario()));
+    $('export-png').addEventListener('click', () => {
+      c.painter.draw(); // the backing store holds the current frame
+      downloadCanvasPng(c.canvas, c.model.name);
+    });
+    $('export-csv').addEventListener('click', () => {
+      try {
+        downloadTrajectoriesCsv(c.scenario());
+      } catch (e) {
+        c.showMessage(messageOf(e));
+      }
+    });
+    $('import').addEventListener('click', () => $('import-file').click());
+    $('import-file').addEventListener('change', async () => {
+      const input = $('import-file');
+      const file = input.files?.[0];
+      input.value = '';
+      if (!file) return;
+      try {
+        c.importScenario(await readScenarioFile(file));
+      } catch (e) {
+        c.showMessage(`Could not import ${file.name}: ${messageOf(e)}`);
+      }
+    });
+  }
+
+  /** Fills the preset menu: an "(edited or imported)" entry, the presets, and the crowd. */
+  fillMenus(presets, crowdMax) {
+    const $ = this.c.$;
+    const select = $('preset');
+    const custom = el('option', '(edited or imported)');
+    custom.value = '';
+    custom.disabled = true;
+    select.append(custom);
+    for (const p of presets) {
+      const o = el('option', p.name);
+      o.value = p.name;
+      o.title = p.summary;
+      select.append(o);
+    }
+    const crowd = el('option', 'crowd of N robots');
+    crowd.value = CROWD_OPTION;
+    crowd.title = `N robots (1 to ${crowdMax}) swap antipodally on a circle, keeping their headings`;
+    select.append(crowd);
+    const crowdN = $('crowd-n');
+    crowdN.max = String(crowdMax);
+    crowdN.value = String(DEFAULT_CROWD);
+  }
+
+  /** Loads a crowd of the N in the N box (as an edit); a bad N is named and changes nothing. */
+  loadCrowd() {
+    const c = this.c;
+    const box = c.$('crowd-n');
+    const n = Number(box.value);
+    const max = c.limits.crowdMax;
+    if (!Number.isInteger(n) || n < 1 || n > max) {
+      c.showMessage(`crowd: N must be a whole number from 1 to ${max}, not ${box.value || 'empty'}`);
+      this.showPreset(c.presetName());
+      return false;
+    }
+    return c.loadPreset(`${CROWD_PREFIX}${n}`, { edit: true });
+  }
+
+  /** The preset menu (and N box) showing preset `name`, or "(edited or imported)" for null. */
+  showPreset(name) {
+    const $ = this.c.$;
+    const shown = name ?? '';
+    const crowd = shown.startsWith(CROWD_PREFIX);
+    $('preset').value = crowd ? CROWD_OPTION : shown;
+    $('crowd-box').hidden = !crowd;
+    if (crowd) $('crowd-n').value = shown.slice(CROWD_PREFIX.length);
+  }
+
+  /** The field menu, θ(0) and the sensing box showing the controller's display options. */
+  showDisplay({ fieldMode, theta0Deg, showSensing }) {
+    const $ = this.c.$;
+    $('field').value = fieldMode;
+    $('theta0').value = String(theta0Deg);
+    $('sensing').checked = showSensing;
+  }
+
+  /** The play button and the undo, redo and delete buttons as the state is now. */
+  update() {
+    const c = this.c;
+    const play = c.$('play');
+    play.textContent = c.loop.playing ? 'Pause' : 'Play';
+    play.setAttribute('aria-pressed', String(c.loop.playing));
+    c.$('undo').disabled = !c.history.canUndo;
+    c.$('redo').disabled = !c.history.canRedo;
+    c.$('delete').disabled = !c.selection;
+  }
+}

@@ -1,0 +1,127 @@
+// What a key or a button does to the scenario: add a robot or an obstacle where the view is,
+// delete the selection, nudge it, change a parameter. Each is one gesture of the controller
+// (one undo entry, one `change` event) made of its fine-grained edits.
+
+import { messageOf } from './message.js';
+
+/** A new obstacle's radius as a fraction of the view's smaller side; its ring is twice that. */
+const NEW_OBSTACLE_FRACTION = 0.05;
+/** Candidate spots tried, along a spiral about the view's centre, for a new robot. */
+const ADD_ROBOT_TRIES = 400;
+/** A new robot keeps this many safe radii from every robot and obstacle ring. */
+const ADD_ROBOT_GAP = 3;
+
+/** @typedef {import('./controller.js').Controller} Controller */
+
+/**
+ * The first start/goal pair along a widening spiral about (x, y) that keeps clear of every
+ * robot and obstacle ring of `s`, the start `span` · (−0.2, −0.1) off it and the goal
+ * `span` · (0.2, 0.1), so that repeated clicks add robots side by side instead of one on top
+ * of another (which the core refuses). Without one, the spiral's first pair.
+ */
+function freeSpot(s, x, y, span) {
+  const gap = ADD_ROBOT_GAP * (s.params?.safe_radius ?? 1);
+  const free = (p, key, ring) =>
+    s.robots.every((r) => Math.hypot(r[key][0] - p[0], r[key][1] - p[1]) >= gap) &&
+    s.obstacles.every(
+      (o) => Math.hypot(o.center[0] - p[0], o.center[1] - p[1]) > (ring ? o.influence : o.radius) + gap,
+    );
+  for (let k = 0; k < ADD_ROBOT_TRIES; k++) {
+    const a = k * 2.4; // radians: the golden angle spreads the tries evenly
+    const r = gap * Math.sqrt(k);
+    const start = [x - 0.2 * span + r * Math.cos(a), y - 0.1 * span + r * Math.sin(a)];
+    const goal = [x + 0.2 * span + r * Math.cos(a), y + 0.1 * span + r * Math.sin(a)];
+    if (free(start, 'start', false) && free(goal, 'goal', true)) return [start, goal];
+  }
+  return [
+    [x - 0.2 * span, y - 0.1 * span],
+    [x + 0.2 * span, y + 0.1 * span],
+  ];
+}
+
+/** Adds a robot, heading 0 to a goal heading 0, about the view's centre, and selects it. */
+export function addRobotInView(c) {
+  const view = c.view();
+  const span = Math.min(view.width, view.height) / view.scale;
+  const [start, goal] = freeSpot(c.model, view.wx(view.width / 2), view.wy(view.height / 2), span);
+  let index = 0;
+  const ok = c.change('add-robot', () => {
+    index = c.addRobot([start[0], start[1], 0], [goal[0], goal[1], 0]);
+  });
+  if (ok) {
+    c.selection = { kind: 'robot', index };
+    c.focusRobot = index;
+  }
+}
+
+/** Adds an obstacle at the view's centre, sized to the view, and selects it. */
+export function addObstacleInView(c) {
+  const view = c.view();
+  const r = (NEW_OBSTACLE_FRACTION * Math.min(view.width, view.height)) / view.scale;
+  let index = 0;
+  const ok = c.change('add-obstacle', () => {
+    const center = [view.wx(view.width / 2), view.wy(view.height / 2)];
+    index = c.addObstacle({ center, radius: r, influence: 2 * r });
+  });
+  if (ok) c.selection = { kind: 'obstacle', index };
+}
+
+/** Deletes the selected obstacle, or the selected robot (or the robot of the selected goal). */
+export function deleteSelection(c) {
+  const sel = c.selection;
+  if (!sel) return;
+  const ok = c.change('delete', () => {
+    if (sel.kind === 'obstacle') c.removeObstacle(sel.index);
+    else c.removeRobot(sel.index);
+  });
+  if (ok) {
+    c.selection = null;
+    c.focusRobot = 0;
+  }
+}
+
+/** Moves the selection by (dx, dy) (m) and turns it by `dTheta` (rad). */
+export function nudgeSelection(c, dx, dy, dTheta) {
+  const sel = c.selection;
+  const i = sel.index;
+  if (sel.kind === 'robot') {
+    c.change('robot', () => {
+      const [x, y, theta] = c.views.pose(i);
+      c.moveRobot(i, x + dx, y + dy, theta + dTheta);
+    });
+  } else if (sel.kind === 'goal') {
+    c.change('goal', () => {
+      const g = c.model.robots[i].goal;
+      c.moveGoal(i, g[0] + dx, g[1] + dy, g[2] + dTheta);
+    });
+  } else if (sel.kind === 'obstacle') {
+    c.change('obstacle', () => {
+      const o = c.model.obstacles[i].center;
+      c.moveObstacle(i, o[0] + dx, o[1] + dy);
+    });
+  }
+}
+
+/**
+ * Sets parameter `key` from the parameters panel: `value` is a number, null (an empty
+ * optional field) or the avoidance mode. Returns the message when the core refuses it (the
+ * form goes back to the scenario's values then), else null.
+ * @param {Controller} c
+ */
+export function changeParam(c, key, value) {
+  if (!c.pg) return null;
+  if (typeof value === 'number' && !Number.isFinite(value)) {
+    c.params.fill(c.model.params);
+    return `params.${key}: must be a number`;
+  }
+  c.begin();
+  try {
+    c.setParam(key, value);
+  } catch (e) {
+    c.cancel();
+    c.params.fill(c.model.params);
+    return messageOf(e);
+  }
+  c.commit('params');
+  return null;
+}

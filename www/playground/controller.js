@@ -1,0 +1,551 @@
+// The live simulation of one <dvf-playground> and its edits. The controller owns the wasm
+// `Playground` (`pg`) and the JS model of its scenario (`model`), and holds the parts that
+// work on them: the views into wasm memory, the undo history, the camera, the frame loop, the
+// painter, the input and the panels. The element creates one and calls it; input and panels
+// change the scenario only through the edit methods below.
+//
+// Edits. One method per edit: moveRobot, moveGoal, moveObstacle, resizeObstacle, setParam,
+// addRobot, removeRobot, addObstacle, removeObstacle; and edit(scenario) for undo, imports and
+// links. Each one changes the simulation and the model in place and re-predicts, or throws the
+// core's Error (naming the field) and leaves both as they were. Each calls the facade's method
+// of the same name (`pg.moveGoal(i, x, y, θ)`, …), which checks only what the edit touches and
+// serialises nothing; only `edit(scenario)` passes a whole scenario.
+//
+// Gestures. What a person does (a drag, a key, a button, a field) is one gesture: begin(),
+// any number of edits, commit(kind). The history keeps the scenario text before its first
+// edit; commit pushes it as one undo entry (if the scenario changed) and sends one `change`
+// event.
+// While a gesture lasts the model is updated in place: nothing serialises or re-reads the
+// whole scenario per pointer move. Commit reads the core's scenario once, so that the model
+// holds the core's own numbers again (and the bounds it resolves when a scenario has none).
+//
+// Why this file is longer than the others (about 540 lines): every change of the simulation
+// goes through it, one method each, beside the documents, the clock and the gestures that call
+// them. Split apart, one invariant (the model equals the core's scenario after every gesture)
+// would live in two files.
+
+import { fetchScenarioText } from '../io.js';
+import { buildLegend } from '../panels/legend.js';
+import { ParamsPanel } from '../panels/params.js';
+import { Toolbar } from '../panels/toolbar.js';
+import { Playground, presetScenario } from '../pkg/dvf.js';
+import { Camera } from '../render/camera.js';
+import { changeParam } from './actions.js';
+import { History } from './history.js';
+import { Input } from './input.js';
+import { FrameLoop } from './loop.js';
+import { messageOf } from './message.js';
+import { Painter } from './paint.js';
+import { LiveViews, WASM_READY } from './wasm-views.js';
+
+/** The Step button and the S key advance this much simulated time (s). */
+const STEP_TIME_S = 0.1;
+/** θ(0) of the integral curves until the element says otherwise (degrees): the paper's Fig. 1. */
+export const DEFAULT_THETA0_DEG = 90;
+/** The field overlays. */
+export const FIELD_MODES = ['arrows', 'curves', 'none'];
+
+/**
+ * @typedef {import('../dvf-playground.js').Scenario} Scenario
+ * @typedef {{kind: 'robot' | 'goal' | 'obstacle', index: number}} Selection
+ */
+
+export class Controller {
+  /**
+   * @param {HTMLElement} host the element: the `change` events go there
+   * @param {ShadowRoot} root its shadow root, holding the template (template.js)
+   */
+  constructor(host, root) {
+    this.host = host;
+    this.root = root;
+    /** The part of the template with `data-id` `id`. */
+    this.$ = (id) => /** @type {any} */ (root.querySelector(`[data-id="${id}"]`));
+    /** @type {HTMLCanvasElement} */
+    this.canvas = this.$('canvas');
+    /** @type {Playground | null} */
+    this.pg = null;
+    /** @type {Scenario | null} the scenario shown, kept equal to the core's (see the top) */
+    this.model = null;
+    /** @type {string | null} the preset shown, null once edited or imported */
+    this.preset = null;
+    /** @type {LiveViews | null} */
+    this.views = null;
+    /** @type {import('./wasm-views.js').Limits | null} */
+    this.limits = null;
+    /** @type {import('./wasm-views.js').PresetInfo[]} */
+    this.presetList = [];
+    /** The preset shown when no other is asked for. */
+    this.defaultPreset = '';
+    /** @type {Selection | null} */
+    this.selection = null;
+    /** The inspected robot: its field is drawn, the plots and the panel show it. */
+    this.focusRobot = 0;
+    this.fieldMode = 'arrows';
+    this.theta0Deg = DEFAULT_THETA0_DEG;
+    this.showSensing = false;
+    /** Bumped by every edit, load, reset and API step: the trail layer redraws from scratch. */
+    this.generation = 0;
+    this.connected = false;
+    this.history = new History();
+    this.camera = new Camera();
+    this.loop = new FrameLoop(this);
+    this.painter = new Painter(this);
+    this.toolbar = new Toolbar(this);
+    this.params = new ParamsPanel(this.$('params'), (key, value) => changeParam(this, key, value));
+    buildLegend(this.$('legend'));
+    this.input = new Input(this);
+  }
+
+  /** Waits for the wasm module; false (and the message shown) when it cannot be loaded. */
+  async ready() {
+    try {
+      const { memory, limits, presets, defaultPreset } = await WASM_READY;
+      this.limits = limits;
+      this.presetList = presets;
+      this.defaultPreset = defaultPreset;
+      this.views = new LiveViews(memory);
+    } catch (e) {
+      this.showMessage(
+        `Could not load the simulator (pkg/dvf_bg.wasm): ${messageOf(e)}. Build it with "make build-wasm".`,
+      );
+      return false;
+    }
+    this.toolbar.fillMenus(this.presetList, this.limits.crowdMax);
+    return true;
+  }
+
+  /** The element is in a document: draw. */
+  connect() {
+    this.connected = true;
+    this.requestDraw();
+  }
+
+  /** The element left its document: stop playing and drawing; the simulation is kept. */
+  disconnect() {
+    this.connected = false;
+    this.loop.playing = false;
+  }
+
+  // ---- documents ----------------------------------------------------------------------------
+
+  /**
+   * Loads a scenario (object or JSON text) as a new document: t = 0, view fitted, undo
+   * cleared. Throws the core's Error naming the offending field; the scene is kept then.
+   */
+  load(scenario) {
+    this.#replace(new Playground(scenario), null);
+    this.history.clear();
+    this.toolbar.update();
+  }
+
+  /**
+   * Loads preset `name` (`crowd-N` included); with `edit`, as an undoable edit of the scene.
+   * On a bad name shows the message (unless `quiet`), keeps the scene and returns false.
+   */
+  loadPreset(name, { quiet = false, edit = false } = {}) {
+    try {
+      const pg = Playground.fromPreset(name);
+      if (edit && this.pg) this.history.push(this.text());
+      this.#replace(pg, name);
+      this.showMessage('');
+      if (edit) this.#emit('preset');
+      return true;
+    } catch (e) {
+      if (!quiet) this.showMessage(messageOf(e));
+      this.toolbar.showPreset(this.preset);
+      return false;
+    }
+  }
+
+  /** Fetches and loads the scenario at `url`; on failure shows why, keeps the scene, false. */
+  async loadUrl(url) {
+    try {
+      this.load(await fetchScenarioText(url));
+      this.showMessage('');
+      return true;
+    } catch (e) {
+      this.showMessage(`Could not load the scenario ${url}: ${messageOf(e)}`);
+      return false;
+    }
+  }
+
+  /** Loads an imported scenario text as a new document that Undo takes back. Throws as load. */
+  importScenario(text) {
+    const before = this.pg ? this.text() : null;
+    this.load(text);
+    if (before) this.history.push(before);
+    this.toolbar.update();
+    this.showMessage('');
+    this.#emit('import');
+  }
+
+  #replace(pg, presetName) {
+    const old = this.pg;
+    this.pg = pg;
+    old?.free();
+    this.views.attach(pg);
+    this.loop.newScene();
+    this.selection = null;
+    this.focusRobot = 0;
+    this.painter.newScene();
+    this.camera.fit();
+    this.model = pg.scenario();
+    this.generation += 1;
+    const model = JSON.stringify(this.model);
+    this.preset =
+      presetName ?? this.presetList.find((p) => JSON.stringify(presetScenario(p.name)) === model)?.name ?? null;
+    this.toolbar.showPreset(this.preset);
+    this.params.fill(this.model.params, this.root.activeElement);
+    this.toolbar.update();
+    this.requestDraw();
+  }
+
+  /** The current scenario as a plain object (a copy), or null before the first scene. */
+  scenario() {
+    return this.pg ? structuredClone(this.model) : null;
+  }
+
+  /** The scenario's JSON text: what undo keeps. */
+  text() {
+    return JSON.stringify(this.model);
+  }
+
+  /** The preset shown, or null once the scene has been edited or imported. */
+  presetName() {
+    return this.pg ? this.preset : null;
+  }
+
+  // ---- the clock ----------------------------------------------------------------------------
+
+  play() {
+    if (!this.pg) return;
+    if (this.pg.finished) this.reset();
+    this.loop.play();
+    this.toolbar.update();
+    this.requestDraw();
+  }
+
+  pause() {
+    this.loop.pause();
+    this.toolbar.update();
+    this.requestDraw();
+  }
+
+  togglePlay() {
+    if (this.loop.playing) this.pause();
+    else this.play();
+  }
+
+  /** Back to t = 0 at the scenario's starts (trails cleared). */
+  reset() {
+    if (!this.pg) return;
+    this.pg.reset();
+    this.#changed();
+  }
+
+  /** Advances `n` steps of dt and pauses; returns the steps taken. Throws for a bad `n`. */
+  step(n = 1) {
+    if (!this.pg) return 0;
+    this.pause();
+    const taken = this.pg.step(n);
+    this.#changed();
+    return taken;
+  }
+
+  /** Advances STEP_TIME_S of simulated time (at least one step). */
+  stepTime() {
+    if (this.pg) this.step(Math.max(1, Math.round(STEP_TIME_S / this.pg.dt)));
+  }
+
+  /** Advances `n` steps for the frame loop (which keeps playing); returns the steps taken. */
+  advance(n) {
+    const taken = this.pg.step(n);
+    this.views.refresh();
+    return taken;
+  }
+
+  // ---- edits (see the top of the file) ------------------------------------------------------
+
+  /** Moves robot `i` to (x, y, θ): its start at t = 0, where it is now (a nudge) later. */
+  moveRobot(i, x, y, theta) {
+    const robot = this.#robot(i);
+    const atStart = this.views.time === 0;
+    if (atStart) this.history.willChange(() => this.text());
+    this.#wasm(() => this.pg.moveRobot(i, x, y, theta));
+    if (atStart) robot.start = [x, y, theta];
+    this.#changed();
+  }
+
+  /** Moves robot `i`'s goal to (x, y, θ). */
+  moveGoal(i, x, y, theta) {
+    this.#assign(this.#robot(i), { goal: [x, y, theta] }, () => this.pg.moveGoal(i, x, y, theta));
+  }
+
+  /** Moves obstacle `k`'s centre to (x, y). */
+  moveObstacle(k, x, y) {
+    this.#assign(this.#obstacle(k), { center: [x, y] }, () => this.pg.moveObstacle(k, x, y));
+  }
+
+  /** Gives obstacle `k` disc radius `radius` (r_o) and influence radius `influence` (R_o). */
+  resizeObstacle(k, radius, influence) {
+    this.#assign(this.#obstacle(k), { radius, influence }, () =>
+      this.pg.resizeObstacle(k, radius, influence),
+    );
+  }
+
+  /** Sets `params[name]` to `value` (a number, null for "none", or the avoidance mode). */
+  setParam(name, value) {
+    this.#assign(this.model.params, { [name]: value }, () => this.pg.setParam(name, value));
+  }
+
+  /** Adds a robot from `start` to `goal` ([x, y, θ] each); returns its index. */
+  addRobot(start, goal) {
+    const robots = this.model.robots;
+    const robot = { start: [start[0], start[1], start[2]], goal: [goal[0], goal[1], goal[2]] };
+    this.#splice(robots, robots.length, 0, [robot], () => this.pg.addRobot(...robot.start, ...robot.goal));
+    return robots.length - 1;
+  }
+
+  /** Removes robot `i`. */
+  removeRobot(i) {
+    this.#robot(i);
+    this.#splice(this.model.robots, i, 1, [], () => this.pg.removeRobot(i));
+  }
+
+  /** Adds `obstacle` ({center, radius, influence}); returns its index. */
+  addObstacle({ center, radius, influence }) {
+    const obstacles = this.model.obstacles;
+    const o = { center: [center[0], center[1]], radius, influence };
+    this.#splice(obstacles, obstacles.length, 0, [o], () =>
+      this.pg.addObstacle(o.center[0], o.center[1], radius, influence),
+    );
+    return obstacles.length - 1;
+  }
+
+  /** Removes obstacle `k`. */
+  removeObstacle(k) {
+    this.#obstacle(k);
+    this.#splice(this.model.obstacles, k, 1, [], () => this.pg.removeObstacle(k));
+  }
+
+  /** Replaces the whole scenario (object or JSON text): undo, imports and links. */
+  edit(scenario) {
+    this.history.willChange(() => this.text());
+    this.#wasm(() => this.pg.edit(scenario));
+    this.model = this.pg.scenario();
+    this.#changed();
+  }
+
+  /** Sets `fields` on `part` of the model and makes the facade's `call`; on an error puts them back. */
+  #assign(part, fields, call) {
+    const old = Object.fromEntries(Object.keys(fields).map((key) => [key, part[key]]));
+    this.#editModel(
+      () => Object.assign(part, fields),
+      () => Object.assign(part, old),
+      call,
+    );
+  }
+
+  /** Splices `insert` into `list` of the model and makes the facade's `call`; on an error splices it back. */
+  #splice(list, at, remove, insert, call) {
+    let removed = [];
+    this.#editModel(
+      () => {
+        removed = list.splice(at, remove, ...insert);
+      },
+      () => list.splice(at, insert.length, ...removed),
+      call,
+    );
+  }
+
+  /** Changes the model by `change()` and makes the facade's `call`; `restore()` undoes the change on error. */
+  #editModel(change, restore, call) {
+    this.history.willChange(() => this.text());
+    change();
+    try {
+      this.#wasm(call);
+    } catch (e) {
+      restore();
+      throw e;
+    }
+    this.#changed();
+  }
+
+  /** Calls into wasm for an edit, timed for the benchmarks (`stats.lastEditMs`). */
+  #wasm(call) {
+    const t0 = performance.now();
+    call();
+    this.loop.stats.lastEditMs = performance.now() - t0;
+  }
+
+  /** Robot `i` of the model, or the core's error for a bad index. */
+  #robot(i) {
+    return item(this.model.robots, i, 'robot', 'robots');
+  }
+
+  /** Obstacle `k` of the model, or an error naming it. */
+  #obstacle(k) {
+    return item(this.model.obstacles, k, 'obstacles', 'obstacles');
+  }
+
+  /** After the simulation changed. */
+  #changed() {
+    this.generation += 1;
+    this.views.refresh();
+    this.#fixSelection();
+    this.requestDraw();
+  }
+
+  // ---- gestures -------------------------------------------------------------------------------
+
+  /** Starts a gesture (a drag, a key, a button); one begun within another joins it. */
+  begin() {
+    this.history.begin();
+  }
+
+  /** Ends the gesture: one undo entry if it changed the scenario, one `change` event of `kind`. */
+  commit(kind) {
+    const before = this.history.end();
+    if (before) {
+      this.model = this.pg.scenario();
+      this.#fixSelection();
+      if (this.text() !== before) this.history.push(before);
+      this.toolbar.update();
+    }
+    this.#emit(kind);
+  }
+
+  /** Ends the gesture without keeping it: the scenario goes back to where it began. */
+  cancel() {
+    const before = this.history.end();
+    if (!before || this.text() === before) return;
+    this.#apply(before);
+  }
+
+  /**
+   * One gesture of the edits `edits()` makes, of `kind`: on an error shows the message, keeps
+   * the scene and returns false.
+   */
+  change(kind, edits) {
+    this.begin();
+    try {
+      edits();
+    } catch (e) {
+      this.cancel();
+      this.showMessage(messageOf(e));
+      return false;
+    }
+    this.showMessage('');
+    this.commit(kind);
+    return true;
+  }
+
+  undo() {
+    this.#travel('undo');
+  }
+
+  redo() {
+    this.#travel('redo');
+  }
+
+  #travel(direction) {
+    if (!this.pg) return;
+    if (
+      this.history.travel(
+        direction,
+        () => this.text(),
+        (text) => this.#apply(text),
+      )
+    ) {
+      this.params.fill(this.model.params, this.root.activeElement);
+      this.#emit(direction);
+    }
+    this.toolbar.update();
+  }
+
+  /** Applies scenario text `text` (from the history); false with the message when refused. */
+  #apply(text) {
+    try {
+      this.edit(JSON.parse(text));
+      this.showMessage('');
+      return true;
+    } catch (e) {
+      this.showMessage(messageOf(e));
+      return false;
+    }
+  }
+
+  /** Tells the page: a `change` event of `kind`; the scene is no longer a preset but after one. */
+  #emit(kind) {
+    if (kind !== 'preset' && this.preset) {
+      this.preset = null;
+      this.toolbar.showPreset(null);
+    }
+    this.host.dispatchEvent(new CustomEvent('change', { detail: { kind } }));
+  }
+
+  #fixSelection() {
+    const n = this.model.robots.length;
+    if (this.focusRobot >= n) this.focusRobot = n - 1;
+    const sel = this.selection;
+    if (!sel) return;
+    const count = sel.kind === 'obstacle' ? this.model.obstacles.length : n;
+    if (sel.index >= count) this.selection = null;
+  }
+
+  // ---- what the frame reads -------------------------------------------------------------------
+
+  /** The world↔screen maps of the canvas now (render/camera.js). */
+  view() {
+    const w = Math.max(1, this.canvas.clientWidth);
+    const h = Math.max(1, this.canvas.clientHeight);
+    return this.camera.view(this.model.bounds, w, h);
+  }
+
+  /** Page coordinates (CSS px, like pageX/pageY) of world point (x, y) in metres. */
+  worldToScreen(x, y) {
+    const view = this.view();
+    const rect = this.canvas.getBoundingClientRect();
+    return { x: rect.left + window.scrollX + view.sx(x), y: rect.top + window.scrollY + view.sy(y) };
+  }
+
+  /** Zooms by `factor` about canvas point (px, py). */
+  zoom(factor, px, py) {
+    this.camera.zoomAbout(this.view(), factor, px, py);
+    this.requestDraw();
+  }
+
+  /** Fits the scenario's bounds in the view. */
+  fit() {
+    this.camera.fit();
+    this.requestDraw();
+  }
+
+  /** The field overlay, θ(0) of the curves (degrees) and the sensing circles. */
+  setDisplay({ field, theta0Deg, sensing }) {
+    this.fieldMode = field;
+    this.theta0Deg = theta0Deg;
+    this.showSensing = sensing;
+    this.toolbar.showDisplay(this);
+    this.requestDraw();
+  }
+
+  /** Shows `text` in the message bar (as text, never HTML); empty hides it. */
+  showMessage(text) {
+    const box = this.$('message');
+    box.textContent = text ?? '';
+    box.hidden = !text;
+  }
+
+  requestDraw() {
+    this.loop.requestDraw();
+  }
+}
+
+/** `list[i]`, or an Error in the core's words for an index out of range. */
+function item(list, i, field, plural) {
+  if (!(Number.isInteger(i) && i >= 0 && i < list.length)) {
+    throw new Error(`${field}: index ${i} is out of range (the scenario has ${list.length} ${plural})`);
+  }
+  return list[i];
+}

@@ -1,0 +1,250 @@
+// Pointer, wheel and keyboard input on a playground's canvas. Mouse, touch and pen through
+// pointer events: drag a robot, goal, obstacle or handle (one gesture of the controller, its
+// moves coalesced to one per animation frame), drag the background to pan, pinch with two
+// fingers to zoom; the wheel zooms about the pointer; keys act on the focused canvas.
+
+import { addObstacleInView, addRobotInView, deleteSelection, nudgeSelection } from './actions.js';
+import { hitTest } from './hit.js';
+import { messageOf } from './message.js';
+
+/** Keyboard: arrows move the selection by this fraction of the view's smaller side. */
+const KEY_MOVE_FRACTION = 0.02;
+/** Keyboard: Q/E turn the selection by this angle (rad). */
+const KEY_TURN_RAD = Math.PI / 36;
+/** Zoom factor per wheel notch or +/- key. */
+const ZOOM_STEP = 1.2;
+
+export class Input {
+  /** @param {import('./controller.js').Controller} controller */
+  constructor(controller) {
+    this.c = controller;
+    /** The drag in progress: its target (hit.js), pointer, grip offset (m) and last point. */
+    this.drag = null;
+    /** The newest pointer position of the drag, applied by the next frame. */
+    this.pendingPointer = null;
+    /** Pointers down on the canvas (id → canvas point), for two-finger pinch zoom. */
+    this.pointers = new Map();
+    this.pinch = null;
+    const canvas = controller.canvas;
+    canvas.addEventListener('pointerdown', (e) => this.pointerDown(e));
+    canvas.addEventListener('pointermove', (e) => this.pointerMove(e));
+    canvas.addEventListener('pointerup', (e) => this.pointerUp(e));
+    canvas.addEventListener('pointercancel', (e) => this.pointerUp(e));
+    canvas.addEventListener('wheel', (e) => this.wheel(e), { passive: false });
+    canvas.addEventListener('keydown', (e) => this.keyDown(e));
+  }
+
+  /** Where the pointer is, in canvas CSS px. */
+  local(e) {
+    const r = this.c.canvas.getBoundingClientRect();
+    return { px: e.clientX - r.left, py: e.clientY - r.top };
+  }
+
+  pointerDown(e) {
+    const c = this.c;
+    if (!c.pg || e.button > 0) return;
+    c.canvas.focus({ preventScroll: true });
+    const { px, py } = this.local(e);
+    this.pointers.set(e.pointerId, { px, py });
+    if (this.pointers.size === 2) {
+      // A second finger: whatever the first started becomes a pinch (zoom and pan).
+      this.cancelDrag();
+      const [a, b] = [...this.pointers.values()];
+      c.view();
+      this.pinch = {
+        distance: Math.hypot(a.px - b.px, a.py - b.py) || 1,
+        start: { ...c.camera.state },
+        mid: [(a.px + b.px) / 2, (a.py + b.py) / 2],
+      };
+      return;
+    }
+    if (this.pointers.size > 2) return;
+    const target = hitTest(c, px, py);
+    let anchor = [0, 0];
+    if (target.kind === 'robot' || target.kind === 'goal' || target.kind === 'obstacle') {
+      c.selection = { kind: target.kind, index: target.index };
+      if (target.kind !== 'obstacle') c.focusRobot = target.index;
+      if (target.kind === 'robot') anchor = c.views.pose(target.index);
+      if (target.kind === 'goal') anchor = c.model.robots[target.index].goal;
+      if (target.kind === 'obstacle') anchor = c.model.obstacles[target.index].center;
+    }
+    const view = c.view();
+    this.drag = {
+      ...target,
+      pointerId: e.pointerId,
+      offset: [view.wx(px) - anchor[0], view.wy(py) - anchor[1]],
+      last: { px, py },
+      moved: false,
+    };
+    if (target.kind !== 'pan') c.begin();
+    c.canvas.setPointerCapture(e.pointerId);
+    c.toolbar.update();
+    c.requestDraw();
+  }
+
+  pointerMove(e) {
+    if (this.pointers.has(e.pointerId)) this.pointers.set(e.pointerId, this.local(e));
+    if (this.pinch && this.pointers.size === 2) {
+      const [a, b] = [...this.pointers.values()];
+      const canvas = this.c.canvas;
+      this.c.camera.pinch(this.pinch, a, b, canvas.clientWidth, canvas.clientHeight);
+      this.c.requestDraw();
+      return;
+    }
+    if (!this.drag || e.pointerId !== this.drag.pointerId) return;
+    // Coalesced: the newest position is applied once per animation frame.
+    this.pendingPointer = this.local(e);
+    this.c.requestDraw();
+  }
+
+  pointerUp(e) {
+    const c = this.c;
+    this.pointers.delete(e.pointerId);
+    if (this.pinch) {
+      if (this.pointers.size < 2) this.pinch = null;
+      if (c.canvas.hasPointerCapture(e.pointerId)) c.canvas.releasePointerCapture(e.pointerId);
+      return;
+    }
+    if (!this.drag || e.pointerId !== this.drag.pointerId) return;
+    this.applyPending();
+    const d = this.drag;
+    this.drag = null;
+    if (c.canvas.hasPointerCapture(e.pointerId)) c.canvas.releasePointerCapture(e.pointerId);
+    if (d.kind !== 'pan') {
+      if (d.moved) c.commit(d.kind);
+      else c.cancel();
+    }
+    c.requestDraw();
+  }
+
+  /** Ends a drag without keeping it: the scene goes back to where the drag began. */
+  cancelDrag() {
+    const d = this.drag;
+    if (!d) return;
+    this.drag = null;
+    this.pendingPointer = null;
+    if (d.kind !== 'pan') this.c.cancel();
+  }
+
+  /** Applies the drag's newest pointer position, if it moved since the last frame. */
+  applyPending() {
+    const p = this.pendingPointer;
+    if (!p) return;
+    this.pendingPointer = null;
+    this.applyDrag(p);
+  }
+
+  /** Applies the drag in progress for the pointer at canvas point (px, py). */
+  applyDrag({ px, py }) {
+    const c = this.c;
+    const d = this.drag;
+    if (!d) return;
+    const view = c.view();
+    const wx = view.wx(px);
+    const wy = view.wy(py);
+    d.moved = true;
+    if (d.kind === 'pan') {
+      c.camera.pan(view, px - d.last.px, py - d.last.py);
+      d.last = { px, py };
+      return;
+    }
+    const i = d.index;
+    // Where the grip is now, in the world.
+    const gx = wx - d.offset[0];
+    const gy = wy - d.offset[1];
+    try {
+      if (d.kind === 'robot') {
+        c.moveRobot(i, gx, gy, c.views.pose(i)[2]);
+      } else if (d.kind === 'robot-heading') {
+        const [x, y] = c.views.pose(i);
+        c.moveRobot(i, x, y, Math.atan2(wy - y, wx - x));
+      } else if (d.kind === 'goal') {
+        c.moveGoal(i, gx, gy, c.model.robots[i].goal[2]);
+      } else if (d.kind === 'goal-heading') {
+        const g = c.model.robots[i].goal;
+        c.moveGoal(i, g[0], g[1], Math.atan2(wy - g[1], wx - g[0]));
+      } else if (d.kind === 'obstacle') {
+        c.moveObstacle(i, gx, gy);
+      } else if (d.kind === 'obstacle-radius') {
+        const o = c.model.obstacles[i];
+        const r = Math.max(Math.hypot(wx - o.center[0], wy - o.center[1]), 1e-3);
+        // The ring keeps its width when the disc would grow past it.
+        c.resizeObstacle(i, r, o.influence <= r ? r + (o.influence - o.radius) : o.influence);
+      } else if (d.kind === 'obstacle-influence') {
+        const o = c.model.obstacles[i];
+        c.resizeObstacle(i, o.radius, Math.max(Math.hypot(wx - o.center[0], wy - o.center[1]), o.radius * 1.01));
+      }
+      c.showMessage('');
+    } catch (e) {
+      c.showMessage(messageOf(e));
+    }
+  }
+
+  wheel(e) {
+    const c = this.c;
+    // Embedded in text, the wheel scrolls the page unless the canvas has been clicked
+    // (focused) or Ctrl is held; with the full controls it always zooms.
+    const mine = c.host.hasAttribute('controls') || e.ctrlKey || c.root.activeElement === c.canvas;
+    if (!mine) return;
+    e.preventDefault();
+    const { px, py } = this.local(e);
+    c.zoom(e.deltaY < 0 ? ZOOM_STEP : 1 / ZOOM_STEP, px, py);
+  }
+
+  keyDown(e) {
+    const c = this.c;
+    if (!c.pg) return;
+    const mod = e.ctrlKey || e.metaKey;
+    const key = e.key;
+    const centre = () => [c.canvas.clientWidth / 2, c.canvas.clientHeight / 2];
+    let handled = true;
+    if (mod && (key === 'z' || key === 'Z')) {
+      if (e.shiftKey) c.redo();
+      else c.undo();
+    } else if (mod && key === 'y') c.redo();
+    else if (mod) handled = false;
+    else if (key === ' ') c.togglePlay();
+    else if (key === 's' || key === 'S') c.stepTime();
+    else if (key === 'r' || key === 'R') c.reset();
+    else if (key === 'a' || key === 'A') addRobotInView(c);
+    else if (key === 'o' || key === 'O') addObstacleInView(c);
+    else if (key === 'Delete' || key === 'Backspace') deleteSelection(c);
+    else if (key === 'f' || key === 'F') c.fit();
+    else if (key === '+' || key === '=') c.zoom(ZOOM_STEP, ...centre());
+    else if (key === '-' || key === '_') c.zoom(1 / ZOOM_STEP, ...centre());
+    else if (key === '[' || key === ']') this.cycleSelection(key === ']' ? 1 : -1);
+    else if (key === 'g' || key === 'G') this.toggleGoalSelection();
+    else if (key === 'Escape') c.selection = null;
+    else if (key.startsWith('Arrow') && c.selection) {
+      const view = c.view();
+      const stepM = (KEY_MOVE_FRACTION * Math.min(view.width, view.height)) / view.scale;
+      const dx = key === 'ArrowLeft' ? -stepM : key === 'ArrowRight' ? stepM : 0;
+      const dy = key === 'ArrowDown' ? -stepM : key === 'ArrowUp' ? stepM : 0;
+      nudgeSelection(c, dx, dy, 0);
+    } else if ((key === 'q' || key === 'Q' || key === 'e' || key === 'E') && c.selection) {
+      nudgeSelection(c, 0, 0, key.toLowerCase() === 'q' ? KEY_TURN_RAD : -KEY_TURN_RAD);
+    } else handled = false;
+    if (handled) {
+      e.preventDefault();
+      c.toolbar.update();
+      c.requestDraw();
+    }
+  }
+
+  /** Selects the next (`dir` 1) or previous (−1) robot, and inspects it. */
+  cycleSelection(dir) {
+    const c = this.c;
+    const n = c.model.robots.length;
+    const i = c.selection && c.selection.kind !== 'obstacle' ? (c.selection.index + dir + n) % n : 0;
+    c.selection = { kind: 'robot', index: i };
+    c.focusRobot = i;
+  }
+
+  /** Switches the selection between a robot and its goal. */
+  toggleGoalSelection() {
+    const c = this.c;
+    const sel = c.selection;
+    if (!sel || sel.kind === 'obstacle') return;
+    c.selection = { kind: sel.kind === 'robot' ? 'goal' : 'robot', index: sel.index };
+  }
+}

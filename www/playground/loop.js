@@ -1,0 +1,147 @@
+// The requestAnimationFrame loop of one playground: a frame is drawn when something asked for
+// one, and every frame while the clock plays. A playing frame first steps the simulation by
+// the wall time since the last one (at the playback speed), within a step budget, and records
+// how long its work took for the benchmarks.
+
+/** Playback speeds offered (simulated seconds per wall-clock second). */
+export const SPEEDS = [0.25, 0.5, 1, 2, 4];
+export const DEFAULT_SPEED = 1;
+/** A frame never advances more than this wall time (s): a hidden tab does not jump ahead. */
+const MAX_FRAME_WALL_S = 0.1;
+/**
+ * A frame spends at most about this long stepping (ms): a crowd too large for real time plays
+ * slower (the clock says by how much) rather than making every frame longer than the last.
+ */
+const STEP_BUDGET_MS = 20;
+/** Frame work times kept for the benchmark (a ring; see `stats`). */
+const WORK_SAMPLES = 600;
+
+export class FrameLoop {
+  /** @param {import('./controller.js').Controller} controller */
+  constructor(controller) {
+    this.c = controller;
+    this.playing = false;
+    this.speed = DEFAULT_SPEED;
+    /** @type {number | null} the time of the last playing frame (ms) */
+    this.lastFrameMs = null;
+    /** Steps owed to the clock, carried from frame to frame (a fraction of one). */
+    this.stepCarry = 0;
+    /** @type {number | null} mean wall time of one step (ms), for the step budget */
+    this.stepMs = null;
+    /** Simulated over wall-clock time in the last frames (the speed when the budget holds). */
+    this.rate = 1;
+    this.frameRequested = false;
+    /** @type {HTMLCanvasElement | null} */
+    this.rasterSink = null;
+    /**
+     * Diagnostics read by the end-to-end tests and benchmarks: frames drawn, when the first
+     * was (ms since the page's time origin), the time of the last edit with its prediction,
+     * and the work of the last and the slowest frame (ms). With `rasterInWork` set, a frame's
+     * work includes the rasterisation of its drawing (see rasterNow).
+     */
+    this.stats = {
+      frames: 0,
+      /** @type {number | undefined} */
+      firstFrameMs: undefined,
+      lastEditMs: 0,
+      frameWorkMs: 0,
+      maxFrameWorkMs: 0,
+      /** The work of the last WORK_SAMPLES frames (ms), a ring written at `workCount % length`. */
+      work: new Float64Array(WORK_SAMPLES),
+      workCount: 0,
+      rasterInWork: false,
+    };
+  }
+
+  play() {
+    this.playing = true;
+    this.lastFrameMs = null;
+  }
+
+  pause() {
+    this.playing = false;
+  }
+
+  /** A new simulation: stopped, and its step cost not yet known. */
+  newScene() {
+    this.playing = false;
+    this.stepMs = null;
+  }
+
+  /** Asks for a frame (one at a time, and none while the element is out of the document). */
+  requestDraw() {
+    if (this.frameRequested || !this.c.connected) return;
+    this.frameRequested = true;
+    requestAnimationFrame((ms) => this.frame(ms));
+  }
+
+  frame(nowMs) {
+    const c = this.c;
+    // What the frame's own work asks for (an edit of the drag it applies) is drawn by it.
+    try {
+      if (!c.pg) return;
+      const workStart = performance.now();
+      c.input.applyPending();
+      if (this.playing) this.advance(nowMs);
+      c.painter.draw();
+      if (this.stats.rasterInWork) this.rasterNow();
+      const st = this.stats;
+      if (st.frames === 0) st.firstFrameMs = performance.now();
+      st.frames += 1;
+      st.frameWorkMs = performance.now() - workStart;
+      st.maxFrameWorkMs = Math.max(st.maxFrameWorkMs, st.frameWorkMs);
+      st.work[st.workCount % WORK_SAMPLES] = st.frameWorkMs;
+      st.workCount += 1;
+    } finally {
+      this.frameRequested = false;
+    }
+    if (this.playing) this.requestDraw();
+  }
+
+  /** Steps the simulation for a playing frame at `nowMs`. */
+  advance(nowMs) {
+    const c = this.c;
+    const wall = this.lastFrameMs == null ? 0 : Math.min(MAX_FRAME_WALL_S, (nowMs - this.lastFrameMs) / 1000);
+    this.lastFrameMs = nowMs;
+    this.stepCarry += (wall * this.speed) / c.pg.dt;
+    let n = Math.floor(this.stepCarry);
+    this.stepCarry -= n;
+    // The step budget: what does not fit is dropped, and the clock shows the slower rate.
+    const fit = this.stepMs == null ? 1 : Math.max(1, Math.floor(STEP_BUDGET_MS / this.stepMs));
+    if (n > fit) {
+      this.rate = (fit / n) * this.speed;
+      n = fit;
+      this.stepCarry = 0;
+    } else if (n > 0) {
+      this.rate = this.speed;
+    }
+    if (n > 0) {
+      const t0 = performance.now();
+      const taken = c.advance(n);
+      if (taken > 0) {
+        const per = (performance.now() - t0) / taken;
+        this.stepMs = this.stepMs == null ? per : 0.8 * this.stepMs + 0.2 * per;
+      }
+    }
+    if (c.pg.finished) {
+      this.playing = false;
+      c.toolbar.update();
+    }
+  }
+
+  /**
+   * Makes the browser rasterise this frame's drawing now rather than after the callback, by
+   * using both canvases as images (for the benchmark, so that the work it times includes the
+   * pixels: Chromium records Canvas 2D calls and rasterises them later).
+   */
+  rasterNow() {
+    if (!this.rasterSink) {
+      this.rasterSink = document.createElement('canvas');
+      this.rasterSink.width = 1;
+      this.rasterSink.height = 1;
+    }
+    const sink = this.rasterSink.getContext('2d');
+    sink.drawImage(this.c.canvas, 0, 0, 1, 1);
+    sink.drawImage(this.c.$('plots'), 0, 0, 1, 1);
+  }
+}

@@ -1,0 +1,140 @@
+// One frame's picture of a playground: the scene on its canvas (with the field overlay, the
+// trail layer and the crowd's sprites), the clock, title and hint over it, and with the
+// controls the plots and the inspected robot's line in the side panel.
+
+import { showInspected } from '../panels/inspected.js';
+import { PlotsPanel } from '../panels/plots.js';
+import { fitCanvas } from '../render/canvas.js';
+import { drawScene } from '../render/scene.js';
+import { SpriteLayer } from '../render/sprites.js';
+import { FIELD_SPACING_PX } from '../render/theme.js';
+import { TRAIL_SETTLE_MS, TrailLayer } from '../render/trails.js';
+import { messageOf } from './message.js';
+
+/** At most this many field arrows per side. */
+const MAX_FIELD_SIDE = 60;
+/** Integral curves start from an n × n grid over the scenario's bounds. */
+const CURVE_GRID = 9;
+
+export class Painter {
+  /** @param {import('./controller.js').Controller} controller */
+  constructor(controller) {
+    this.c = controller;
+    this.trailLayer = new TrailLayer();
+    this.spriteLayer = new SpriteLayer();
+    this.plots = new PlotsPanel(controller.$('plots'));
+    /** The integral curves drawn, and what they were computed for. */
+    this.curves = null;
+    this.curvesKey = '';
+    /** @type {ReturnType<typeof setTimeout> | null} */
+    this.settleTimer = null;
+  }
+
+  /** A new simulation: the curves are computed anew. */
+  newScene() {
+    this.curvesKey = '';
+  }
+
+  draw() {
+    const c = this.c;
+    const { ctx, width, height } = fitCanvas(c.canvas);
+    const view = c.view();
+    const fieldLength = c.fieldMode === 'arrows' ? this.sampleField(view, width, height) : 0;
+    const curves = c.fieldMode === 'curves' ? this.integralCurves() : null;
+    // After every other call into wasm this frame (a view is valid until the memory grows).
+    /** @type {import('../render/scene.js').Scene} */
+    const scene = {
+      ...c.views.read(),
+      scenario: c.model,
+      selection: c.selection,
+      focusRobot: c.focusRobot,
+      showSensing: c.showSensing,
+      field: fieldLength ? c.views.field(fieldLength) : null,
+      curves,
+      curvePoints: c.limits.curvePoints,
+      trailLayer: this.trailLayer,
+      spriteLayer: this.spriteLayer,
+      dpr: ctx.canvas.width / width,
+    };
+    this.trailLayer.update(view, scene, scene.dpr, c.generation, performance.now());
+    if (this.trailLayer.stale && !this.settleTimer) {
+      // The trails are shown stretched while the view moves: draw them anew once it rests.
+      this.settleTimer = setTimeout(() => {
+        this.settleTimer = null;
+        c.requestDraw();
+      }, TRAIL_SETTLE_MS);
+    }
+    drawScene(ctx, view, scene);
+    const loop = c.loop;
+    const slowed =
+      loop.playing && loop.rate < loop.speed * 0.995
+        ? ` (${loop.rate.toPrecision(2)}× real time: the crowd steps slower than the clock)`
+        : '';
+    c.$('clock').textContent =
+      `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s${loop.playing ? slowed : ' (paused)'}`;
+    c.$('hint').textContent = this.hintText();
+    // Free text from the scenario: textContent only, never HTML.
+    c.$('title').textContent = c.model.name;
+    if (c.host.hasAttribute('controls')) {
+      this.plots.draw(scene, c.focusRobot);
+      showInspected(c.$('robot-info'), c.focusRobot, c.model.robots.length, scene.status);
+    }
+  }
+
+  hintText() {
+    const c = this.c;
+    if (c.input.drag) return '';
+    const robot = c.focusRobot + 1;
+    if (c.fieldMode === 'curves') return `integral curves of robot ${robot}'s goal field from θ(0) = ${c.theta0Deg}°`;
+    if (c.fieldMode === 'arrows') return `arrows: the field Γ of robot ${robot} at its current heading`;
+    return '';
+  }
+
+  /**
+   * Samples the inspected robot's field over the view into wasm memory (read it with
+   * `views.field`); returns the count of values, 0 with the message on error.
+   */
+  sampleField(view, width, height) {
+    const c = this.c;
+    const nx = Math.min(MAX_FIELD_SIDE, Math.max(2, Math.floor(width / FIELD_SPACING_PX)));
+    const ny = Math.min(MAX_FIELD_SIDE, Math.max(2, Math.floor(height / FIELD_SPACING_PX)));
+    const hx = width / nx / 2;
+    const hy = height / ny / 2;
+    try {
+      return c.pg.refreshField(
+        c.focusRobot,
+        view.wx(hx),
+        view.wy(height - hy),
+        view.wx(width - hx),
+        view.wy(hy),
+        nx,
+        ny,
+      );
+    } catch (e) {
+      c.showMessage(messageOf(e));
+      return 0;
+    }
+  }
+
+  /**
+   * The inspected robot's integral curves, computed again only when the robot, its goal, θ(0)
+   * or the bounds change; null with the message on error.
+   */
+  integralCurves() {
+    const c = this.c;
+    const s = c.model;
+    const g = s.robots[c.focusRobot]?.goal;
+    const key = JSON.stringify([c.focusRobot, g, c.theta0Deg, s.bounds]);
+    if (key !== this.curvesKey) {
+      const [x0, y0, x1, y1] = s.bounds;
+      try {
+        this.curves = c.pg.integralCurves(c.focusRobot, (c.theta0Deg * Math.PI) / 180, x0, y0, x1, y1, CURVE_GRID);
+      } catch (e) {
+        c.showMessage(messageOf(e));
+        this.curves = null;
+      }
+      this.curvesKey = key;
+    }
+    return this.curves;
+  }
+}

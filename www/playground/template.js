@@ -1,0 +1,69 @@
+// The HTML of <dvf-playground>'s shadow root: toolbar, message bar, canvas with its clock,
+// title and hint, and the side panels (inspected robot with its plots, parameters, legend).
+// Parts are found by their `data-id`; the stylesheet is ../playground.css, found relative to
+// this module. Nothing from a scenario is ever put into this HTML.
+
+export const TEMPLATE = `
+<link rel="stylesheet" href="${new URL('../playground.css', import.meta.url)}">
+<div class="pg" part="root">
+  <div class="toolbar" role="toolbar" aria-label="Playground controls">
+    <span class="group full">
+      <label>Preset <select data-id="preset" aria-label="Load a preset of the paper's examples"></select></label>
+      <label data-id="crowd-box" hidden>N <input data-id="crowd-n" class="crowd-n" type="number" min="1" step="1" aria-label="Robots in the crowd"></label>
+    </span>
+    <span class="group">
+      <button type="button" data-id="play" aria-pressed="false" title="Play / pause (Space)">Play</button>
+      <button type="button" data-id="step" title="Advance 0.1 s (S)">Step</button>
+      <button type="button" data-id="reset" title="Back to t = 0 at the starts (R)">Reset</button>
+      <label class="full">Speed <select data-id="speed" aria-label="Playback speed"></select></label>
+    </span>
+    <span class="group full">
+      <button type="button" data-id="undo" title="Undo (Ctrl+Z)">Undo</button>
+      <button type="button" data-id="redo" title="Redo (Ctrl+Shift+Z)">Redo</button>
+      <button type="button" data-id="add-robot" title="Add a robot at the centre of the view (A)">+ Robot</button>
+      <button type="button" data-id="add-obstacle" title="Add an obstacle at the centre of the view (O)">+ Obstacle</button>
+      <button type="button" data-id="delete" title="Delete the selected robot or obstacle (Delete)">Delete</button>
+    </span>
+    <span class="group">
+      <label>Field <select data-id="field" aria-label="Field display">
+        <option value="arrows">arrows Γ</option><option value="curves">integral curves</option><option value="none">off</option>
+      </select></label>
+      <label>θ(0) <input data-id="theta0" type="number" step="15" aria-label="θ(0) of the integral curves, degrees"> °</label>
+      <label class="check full"><input data-id="sensing" type="checkbox"> R_s</label>
+      <button type="button" data-id="fit" class="full" title="Fit the scenario in the view (F)">Fit</button>
+    </span>
+    <span class="group full">
+      <button type="button" data-id="export-json" title="Download the scenario as JSON">Scenario JSON</button>
+      <button type="button" data-id="export-png" title="Download the picture as PNG">PNG</button>
+      <button type="button" data-id="export-csv" title="Download the whole run's trajectories as CSV">CSV</button>
+      <button type="button" data-id="import" title="Load a scenario JSON file">Import…</button>
+      <input data-id="import-file" type="file" accept=".json,application/json" hidden>
+    </span>
+  </div>
+  <div class="message" data-id="message" role="alert" hidden></div>
+  <div class="body">
+    <div class="stage">
+      <canvas data-id="canvas" tabindex="0" role="application"
+        aria-label="Playground canvas. Drag robots, goals and obstacles; keys: Space play, S step, R reset, arrows move, Q and E turn, A add robot, O add obstacle, Delete, brackets select, F fit."></canvas>
+      <div class="clock" data-id="clock"></div>
+      <div class="title" data-id="title"></div>
+      <div class="hint" data-id="hint"></div>
+    </div>
+    <aside class="side full">
+      <section>
+        <h3>Inspected robot</h3>
+        <p class="robot-info" data-id="robot-info"></p>
+        <canvas data-id="plots" aria-label="Minimum pair distance and the selected robot's errors over time"></canvas>
+      </section>
+      <section>
+        <h3>Parameters</h3>
+        <form data-id="params" class="params"></form>
+      </section>
+      <section>
+        <h3>Legend</h3>
+        <ul class="legend" data-id="legend"></ul>
+        <p class="keys">Drag a robot, goal or obstacle to move it; drag a handle to turn a heading or resize a disc or ring; drag the background to pan, wheel to zoom. Keys on the canvas: Space play, S step, R reset, arrows move, Q/E turn, [ ] select, A/O add, Delete, Ctrl+Z/Ctrl+Shift+Z, +/− zoom, F fit.</p>
+      </section>
+    </aside>
+  </div>
+</div>`;

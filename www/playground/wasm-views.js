@@ -1,0 +1,223 @@
+// The wasm module and typed-array views into its memory. The module is fetched and compiled
+// once per page, whatever the number of playgrounds. This is the ONLY module that reads the
+// addresses (pointers) of the simulation's arrays and knows their layouts (strides): every
+// other module indexes arrays with the strides exported here.
+
+import init, { defaultPreset, playgroundLimits, presets } from '../pkg/dvf.js';
+
+// The records of the flat arrays come from the module (`playgroundLimits()`, src/wasm/mod.rs),
+// set once it is initialised: ES module bindings are live, so every importer sees them. Nothing
+// reads them before WASM_READY resolves (drawing starts after the first load).
+/** Values per pose in `poses`, `trails` and `predicted`: x, y, θ (m, m, rad). */
+export let POSE_STRIDE = 0;
+/** Values per robot in `status`, at the offsets of STATUS. */
+export let STATUS_STRIDE = 0;
+/**
+ * Offsets in a robot's `status` record: speed, turn rate, the obstacle keep Π ς_i (below 1
+ * near an obstacle), the robot keep ς_c, and the virtual obstacle (NaN when there is none).
+ * @type {{v: number, omega: number, obstacleKeep: number, robotKeep: number, virtualX: number, virtualY: number}}
+ */
+export const STATUS = { v: 0, omega: 0, obstacleKeep: 0, robotKeep: 0, virtualX: 0, virtualY: 0 };
+/** Values per field sample: x, y, Γx, Γy. */
+export let FIELD_STRIDE = 0;
+/** Values per point of an integral curve: x, y. */
+export let CURVE_POINT_STRIDE = 0;
+/** Values per trajectory sample of a `Run`: t, x, y, θ, v, ω. */
+export let SAMPLE_STRIDE = 0;
+
+/**
+ * @typedef {{
+ *   trailCapacity: number, predictionSamples: number, curvePoints: number, maxGridSide: number,
+ *   maxCurveSide: number, maxRobots: number, maxPredictedRobots: number, crowdMax: number,
+ *   poseStride: number, statusStride: number, statusFields: string[], fieldStride: number,
+ *   curveStride: number, sampleStride: number,
+ * }} Limits  the playground's limits and layouts (`playgroundLimits()`)
+ * @typedef {{name: string, summary: string}} PresetInfo
+ */
+
+/**
+ * The module, initialised once per page: its memory, limits, presets and default preset.
+ * @type {Promise<{memory: WebAssembly.Memory, limits: Limits, presets: PresetInfo[], defaultPreset: string}>}
+ */
+export const WASM_READY = init().then((wasm) => {
+  /** @type {Limits} */
+  const limits = playgroundLimits();
+  POSE_STRIDE = limits.poseStride;
+  STATUS_STRIDE = limits.statusStride;
+  FIELD_STRIDE = limits.fieldStride;
+  CURVE_POINT_STRIDE = limits.curveStride;
+  SAMPLE_STRIDE = limits.sampleStride;
+  limits.statusFields.forEach((name, offset) => {
+    STATUS[name] = offset;
+  });
+  return { memory: wasm.memory, limits, presets: presets(), defaultPreset: defaultPreset() };
+});
+
+/**
+ * One buffer of `Playground.layout()`: `length` elements at byte `pointer`, `stride` per item.
+ * @typedef {{pointer: number, length: number, stride: number}} Buffer
+ */
+
+/**
+ * What a frame reads of a live simulation: its counters and its arrays.
+ * @typedef {{
+ *   time: number, duration: number, trailHead: number, historyLength: number, recorded: number,
+ *   trailCapacity: number, predictedSamples: number, poses: Float64Array, status: Float64Array,
+ *   trails: Float64Array, trailLens: Uint32Array, trailTimes: Float64Array,
+ *   trailMinPair: Float64Array, predicted: Float64Array, predictedTimes: Float64Array,
+ *   predictedMinPair: Float64Array,
+ * }} Frame
+ */
+
+/**
+ * One live `Playground` as a frame reads it: its counters, re-read by `refresh()` after every
+ * step or edit, and its arrays as views into wasm memory, never copies. A view stays valid
+ * until the memory grows, which any call into the module may do (another playground on the
+ * page included), so every read re-checks it: a pointer read and a comparison, and a new view
+ * only when the array moved, its length changed or the memory grew. No allocation in a steady
+ * frame.
+ */
+export class LiveViews {
+  /** @param {WebAssembly.Memory} memory */
+  constructor(memory) {
+    this.memory = memory;
+    /** @type {import('../pkg/dvf.js').Playground | null} */
+    this.pg = null;
+    /** @type {Map<string, Float64Array | Uint32Array>} */
+    this.byName = new Map();
+    this.robots = 0;
+    this.time = 0;
+    this.duration = 0;
+    this.trailHead = 0;
+    this.historyLength = 0;
+    this.recorded = 0;
+    this.trailCapacity = 0;
+    this.predictedSamples = 0;
+    /** @type {Record<string, any> | null} the module's layout of every buffer */
+    this.layout = null;
+  }
+
+  /** Reads `pg` from now on. */
+  attach(pg) {
+    this.pg = pg;
+    this.refresh();
+  }
+
+  /** Re-reads the counters (after a step, an edit, a load or a reset). */
+  refresh() {
+    const pg = this.pg;
+    const layout = pg.layout();
+    this.layout = layout;
+    this.robots = layout.robots;
+    this.time = pg.time;
+    this.duration = pg.duration;
+    this.trailHead = layout.trailHead;
+    this.historyLength = layout.historyLength;
+    this.recorded = layout.trailRecorded;
+    this.trailCapacity = layout.trailCapacity;
+    this.predictedSamples = layout.predictedSamples;
+  }
+
+  /** `[robots · 3]`: x, y, θ now. */
+  get poses() {
+    return this.f64('poses', this.layout.poses);
+  }
+
+  /** `[robots · 6]`: see STATUS. */
+  get status() {
+    return this.f64('status', this.layout.status);
+  }
+
+  /** `[robots · trailCapacity · 3]`: one ring of past poses per robot. */
+  get trails() {
+    return this.f64('trails', this.layout.trails);
+  }
+
+  /** `[robots]`: samples held in each robot's ring. */
+  get trailLens() {
+    return this.u32('trailLens', this.layout.trailLengths);
+  }
+
+  /** `[trailCapacity]`: time of each ring slot (s). */
+  get trailTimes() {
+    return this.f64('trailTimes', this.layout.trailTimes);
+  }
+
+  /** `[trailCapacity]`: smallest distance between two robots at each ring slot (m, NaN: none). */
+  get trailMinPair() {
+    return this.f64('trailMinPair', this.layout.trailMinPair);
+  }
+
+  /** `[robots · predictedSamples · 3]`: the predicted poses from now on. */
+  get predicted() {
+    return this.f64('predicted', this.layout.predicted);
+  }
+
+  /** `[predictedSamples]`: time of each predicted sample (s). */
+  get predictedTimes() {
+    return this.f64('predictedTimes', this.layout.predictedTimes);
+  }
+
+  /** `[predictedSamples]`: predicted smallest distance between two robots (m, NaN: none). */
+  get predictedMinPair() {
+    return this.f64('predictedMinPair', this.layout.predictedMinPair);
+  }
+
+  /** Robot `i`'s pose now, [x, y, θ]. */
+  pose(i) {
+    const p = this.poses;
+    const o = i * POSE_STRIDE;
+    return [p[o], p[o + 1], p[o + 2]];
+  }
+
+  /** The last field samples (`refreshField`), `length` values. */
+  field(length) {
+    const field = this.pg.layout().field;
+    return this.f64('field', { pointer: field.pointer, length, stride: field.stride });
+  }
+
+  /**
+   * Every counter and array once, as a plain object: read after every other call into wasm
+   * of the frame, since a call may grow the memory and detach the views.
+   * @returns {Frame}
+   */
+  read() {
+    return {
+      time: this.time,
+      duration: this.duration,
+      trailHead: this.trailHead,
+      historyLength: this.historyLength,
+      recorded: this.recorded,
+      trailCapacity: this.trailCapacity,
+      predictedSamples: this.predictedSamples,
+      poses: this.poses,
+      status: this.status,
+      trails: this.trails,
+      trailLens: this.trailLens,
+      trailTimes: this.trailTimes,
+      trailMinPair: this.trailMinPair,
+      predicted: this.predicted,
+      predictedTimes: this.predictedTimes,
+      predictedMinPair: this.predictedMinPair,
+    };
+  }
+
+  /** @param {string} name @param {Buffer} b */
+  f64(name, b) {
+    return /** @type {Float64Array} */ (this.view(name, Float64Array, b.pointer, b.length));
+  }
+
+  /** @param {string} name @param {Buffer} b */
+  u32(name, b) {
+    return /** @type {Uint32Array} */ (this.view(name, Uint32Array, b.pointer, b.length));
+  }
+
+  view(name, Type, pointer, length) {
+    const buffer = this.memory.buffer;
+    const v = this.byName.get(name);
+    if (v && v.buffer === buffer && v.byteOffset === pointer && v.length === length) return v;
+    const made = new Type(buffer, pointer, length);
+    this.byName.set(name, made);
+    return made;
+  }
+}
