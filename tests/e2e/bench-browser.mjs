@@ -165,7 +165,7 @@ await run(async ({ base, newPage, browser }) => {
         for (let k = el.stats.workCount - count; k < el.stats.workCount; k++) {
           work.push(el.stats.work[k % el.stats.work.length]);
         }
-        return { work, simulated: el.pg.time - t0, stepMs: el.stepMs, trailSamples: el.pg.trailRecorded };
+        return { work, simulated: el.pg.time - t0, stepMs: el.stepMs, trailSamples: el.cache.recorded };
       },
       [PG, PLAY_MS],
     );

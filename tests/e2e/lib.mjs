@@ -274,8 +274,14 @@ export async function drag(page, [x, y], moves, [dx, dy], selector = 'dvf-playgr
 export function predictions(page, preset, runs, warmup) {
   return page.evaluate(
     async ([name, runs, warmup]) => {
-      const { Playground } = await import('./pkg/dvf.js');
-      const pg = Playground.fromPreset(name);
+      const dvf = await import('./pkg/dvf.js');
+      const { memory } = await dvf.default(); // the page's module, initialised already
+      const pg = dvf.Playground.fromPreset(name);
+      /** The times of the predicted samples, read in place (see `Playground.layout`). */
+      const times = () => {
+        const { predictedTimes } = pg.layout();
+        return new Float64Array(memory.buffer, predictedTimes.pointer, predictedTimes.length);
+      };
       for (let k = 0; k < warmup; k++) pg.predict();
       let t0 = performance.now();
       for (let k = 0; k < runs; k++) pg.predict();
@@ -283,8 +289,8 @@ export function predictions(page, preset, runs, warmup) {
       t0 = performance.now();
       for (let k = 0; k < runs; k++) pg.moveRobot(0, -60 + (k % 5) * 0.3, -40, 0);
       const edit = (performance.now() - t0) / runs;
-      const samples = pg.predictedSamples;
-      const end = pg.predictedTimes()[samples - 1];
+      const samples = pg.layout().predictedSamples;
+      const end = times()[samples - 1];
       const s = pg.scenario();
       s.params.tol_position = 1e-12;
       s.params.tol_heading = 1e-12;
@@ -292,7 +298,8 @@ export function predictions(page, preset, runs, warmup) {
       t0 = performance.now();
       for (let k = 0; k < runs; k++) pg.predict();
       const full = (performance.now() - t0) / runs;
-      const fullEnd = pg.predictedTimes()[pg.predictedSamples - 1];
+      const fullTimes = times();
+      const fullEnd = fullTimes[fullTimes.length - 1];
       pg.free();
       return { predict, edit, samples, end, full, fullEnd };
     },

@@ -393,9 +393,9 @@ await run(async ({ base, newPage }) => {
     const el = document.querySelector(sel);
     const view = el.trailsView(); // the ring, read in place in wasm memory
     const cap = el.cache.trailCapacity;
-    const newest = (el.pg.trailHead - 1 + cap) % cap;
+    const newest = (el.cache.trailHead - 1 + cap) % cap;
     return {
-      len: el.pg.trailLength(0),
+      len: el.cache.trailLens[0],
       same: view[newest * 3] === el.cache.poses[0] && view[newest * 3 + 1] === el.cache.poses[1],
     };
   }, PG);

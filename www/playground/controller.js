@@ -288,9 +288,7 @@ export class Controller {
 
   /** Gives obstacle `k` disc radius `radius` (r_o) and influence radius `influence` (R_o). */
   resizeObstacle(k, radius, influence) {
-    this.#assign(this.#obstacle(k), { radius, influence }, () =>
-      this.pg.resizeObstacle(k, radius, influence),
-    );
+    this.#assign(this.#obstacle(k), { radius, influence }, () => this.pg.resizeObstacle(k, radius, influence));
   }
 
   /** Sets `params[name]` to `value` (a number, null for "none", or the avoidance mode). */
@@ -301,8 +299,10 @@ export class Controller {
   /** Adds a robot from `start` to `goal` ([x, y, θ] each); returns its index. */
   addRobot(start, goal) {
     const robots = this.model.robots;
-    const robot = { start: [start[0], start[1], start[2]], goal: [goal[0], goal[1], goal[2]] };
-    this.#splice(robots, robots.length, 0, [robot], () => this.pg.addRobot(...robot.start, ...robot.goal));
+    const [sx, sy, st] = start;
+    const [gx, gy, gt] = goal;
+    const robot = { start: [sx, sy, st], goal: [gx, gy, gt] };
+    this.#splice(robots, robots.length, 0, [robot], () => this.pg.addRobot(sx, sy, st, gx, gy, gt));
     return robots.length - 1;
   }
 
