@@ -15,7 +15,7 @@ const MAX_OBSTACLE_CELLS: i64 = 1_024;
 ///
 /// [`ObstacleCells::near`]`(p)` holds every obstacle whose surface is within the reach of
 /// `p` (and some farther ones, which the caller's own distance test drops), ascending. Built
-/// once per scenario: obstacles do not move. As in [`Neighbours`], cells are hashed into a
+/// once per scenario: obstacles do not move. As in [`super::Neighbours`], cells are hashed into a
 /// table of counting-sorted lists, so the grid is unbounded and its memory is O(cells covered).
 #[derive(Clone, Debug, Default)]
 pub struct ObstacleCells {

@@ -1,6 +1,6 @@
 //! The simulation: N unicycles ([`crate::unicycle`]) under the DVF controller, a fixed step,
-//! deterministic, with the metrics of the paper's figures ([`metrics`]) and its report
-//! ([`report`]); [`run`] runs a scenario to its end.
+//! deterministic, with the metrics of the paper's figures (`metrics.rs`) and its report
+//! ([`report`]); [`run()`] runs a scenario to its end.
 //!
 //! Each robot's `(v, ω)` is computed from the state at the start of a step (all robots from the
 //! same snapshot) and held over the step, and the unicycle is integrated in closed form over it
@@ -11,7 +11,7 @@
 //!
 //! # Where a planner enters
 //! The loop (integrate, find neighbours, evaluate, observe) and the metrics know nothing of the
-//! method but [`Simulation::evaluate_robot`], which asks the DVF controller
+//! method but `Simulation::evaluate_robot`, which asks the DVF controller
 //! ([`crate::controller::evaluate`]) and the safety barrier ([`crate::safety::filter`]) for one
 //! robot's command from what it senses. A baseline planner (ORCA, a unicycle CLF controller
 //! with the barrier, the dipole field) would be a module beside `controller` and a branch

@@ -1,5 +1,5 @@
 //! The outcome of a run: per robot, where it ended and since when it has been at its goal; over
-//! the run, the smallest distances and the violation events ([`super::metrics`] keeps them).
+//! the run, the smallest distances and the violation events (`sim/metrics.rs` keeps them).
 
 use serde::Serialize;
 
