@@ -28,8 +28,8 @@ lint-rust:
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps
 
 # The JavaScript of www/ and tests/e2e/: one linter and formatter, and the declarations
-# type-checked against the code.
-lint-js: tools
+# type-checked against the code (and against the package's own, hence the build).
+lint-js: build-wasm
 	biome ci
 	tsc --noEmit -p www/tsconfig.json
 

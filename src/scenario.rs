@@ -9,6 +9,9 @@
 //!
 //! Everything but `robots` is optional; unknown keys are an error. [`Scenario::from_json`]
 //! parses and validates, and every error names the offending field.
+//!
+//! Over 500 lines: the format and its validation are one contract, each message beside the field
+//! it checks, the whole-scenario check beside the per-robot and per-obstacle ones that edits use.
 
 use crate::error::Error;
 use crate::obstacle::Obstacle;

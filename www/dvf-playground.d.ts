@@ -138,6 +138,9 @@ export type ChangeKind =
   | 'undo'
   | 'redo';
 
+/** The field overlay: arrows of the inspected robot's field, integral curves of its goal field, or none. */
+export type FieldMode = 'arrows' | 'curves' | 'none';
+
 /** The element's attributes (all optional; see README.md, "Embedding"). */
 export interface DvfPlaygroundAttributes {
   /** A preset name (default: the crate's default preset); `crowd-N` included. */
@@ -149,7 +152,7 @@ export interface DvfPlaygroundAttributes {
   /** Present: start playing once loaded. */
   autoplay?: boolean;
   /** The field overlay (default `arrows`). */
-  field?: 'arrows' | 'curves' | 'none';
+  field?: FieldMode;
   /** θ(0) of the integral curves, in degrees (default 90). */
   theta0?: number;
   /** Present: draw the sensing circles `R_s`. */
@@ -164,6 +167,12 @@ export interface LiveFrame {
   readonly duration: number;
   /** Samples per robot in the trail rings. */
   readonly trailCapacity: number;
+  /** The next ring slot written, shared by every robot. */
+  readonly trailHead: number;
+  /** Trail samples written since the last reset (sample `g` is in slot `g % trailCapacity`). */
+  readonly recorded: number;
+  /** Slots of `trailTimes` and `trailMinPair` written. */
+  readonly historyLength: number;
   /** Samples per robot of the prediction (0 without one). */
   readonly predictedSamples: number;
   /** `[robots · 3]`: x, y, θ now. */
@@ -172,8 +181,18 @@ export interface LiveFrame {
   readonly status: Float64Array;
   /** `[robots · trailCapacity · 3]`: one ring of past poses per robot. */
   readonly trails: Float64Array;
-  /** `[robots · predictedSamples · 3]`: the predicted poses from now on. */
+  /** `[robots]`: samples each robot's ring holds, the oldest at `(trailHead − len + cap) % cap`. */
+  readonly trailLens: Uint32Array;
+  /** `[trailCapacity]`: the time of each ring slot (s). */
+  readonly trailTimes: Float64Array;
+  /** `[trailCapacity]`: the smallest distance between two robots at each slot (m; NaN: none). */
+  readonly trailMinPair: Float64Array;
+  /** `[robots · predictedSamples · 3]`: the predicted poses from now on, sample 0 now. */
   readonly predicted: Float64Array;
+  /** `[predictedSamples]`: the time of each predicted sample (s). */
+  readonly predictedTimes: Float64Array;
+  /** `[predictedSamples]`: the predicted smallest distance between two robots (m; NaN: none). */
+  readonly predictedMinPair: Float64Array;
 }
 
 /** The camera: world centre (m) and scale (CSS px per m). */
@@ -252,7 +271,7 @@ export declare class DvfPlayground extends HTMLElement {
   readonly stats: FrameStats | null;
   /** Mean wall time of one step (ms). */
   readonly stepMs: number | null;
-  readonly fieldMode: 'arrows' | 'curves' | 'none' | null;
+  readonly fieldMode: FieldMode | null;
   /** The inspected robot. */
   focusRobot: number | null;
 

@@ -65,11 +65,20 @@
 //   stepMs                the mean wall time of one step (ms), for the step budget
 //   fieldMode             the field overlay shown: `arrows`, `curves` or `none`
 //   focusRobot            the inspected robot (its field, plots and line); settable
+//   shadowRoot            open: the parts of the template (playground/template.js) are found by
+//                         their `data-id` (`canvas`, `message`, `clock`, `title`, `preset`,
+//                         `crowd-n`, `undo`, `export-json`, `import-file`, …), the parameters by
+//                         `input[name="k_v"]`
 
 import { Controller, DEFAULT_THETA0_DEG, FIELD_MODES } from './playground/controller.js';
 import { TEMPLATE } from './playground/template.js';
 
-/** The live playground element. */
+/** @typedef {import('./dvf-playground.js').DvfPlayground} Declared the element's declaration */
+
+/**
+ * The live playground element; tsc checks it against its declaration.
+ * @implements {Declared}
+ */
 export class DvfPlayground extends HTMLElement {
   static get observedAttributes() {
     return ['preset', 'src', 'field', 'theta0', 'sensing'];
@@ -137,10 +146,10 @@ export class DvfPlayground extends HTMLElement {
   }
 
   #readDisplayAttributes() {
-    const field = this.getAttribute('field');
+    const field = FIELD_MODES.find((mode) => mode === this.getAttribute('field'));
     const theta0 = Number(this.getAttribute('theta0') ?? DEFAULT_THETA0_DEG);
     this.#controller.setDisplay({
-      field: FIELD_MODES.includes(field) ? field : 'arrows',
+      field: field ?? 'arrows',
       theta0Deg: Number.isFinite(theta0) ? theta0 : DEFAULT_THETA0_DEG,
       sensing: this.hasAttribute('sensing'),
     });

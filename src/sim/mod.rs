@@ -9,6 +9,10 @@
 //! step, which no real robot does. The same input gives the same bits on the same platform:
 //! there is no randomness, no parallelism and no iteration over hashed containers.
 //!
+//! Over 500 lines with its tests: the loop, the robot's state and the two in-place edits
+//! (`place_robot`, `place_obstacle`) share the loop's private state (the neighbour lists, the
+//! snapshot speeds); apart, that state would have to be public.
+//!
 //! # Where a planner enters
 //! The loop (integrate, find neighbours, evaluate, observe) and the metrics know nothing of the
 //! method but `Simulation::evaluate_robot`, which asks the DVF controller

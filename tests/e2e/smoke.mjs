@@ -7,6 +7,11 @@
 // their budgets are bench-browser.mjs's). Everything it writes goes to test-results/ (the
 // README's picture is picture.mjs's).
 //
+// Longer than the other files (about 550 lines): one session of the main page, its checks in
+// the order a person meets them, each building on the state the last one left (the drag that
+// undo takes back, the edits the copied link must reopen); the pages it opens beside it (bad
+// links, a hostile name, touch) are a few lines each.
+//
 // Run: make test-e2e   (or: node tests/e2e/smoke.mjs after make build-wasm)
 
 import { readFileSync, statSync } from 'node:fs';

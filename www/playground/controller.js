@@ -2,27 +2,20 @@
 // `Playground` (`pg`) and the JS model of its scenario (`model`), and holds the parts that
 // work on them: the views into wasm memory, the undo history, the camera, the frame loop, the
 // painter, the input and the panels. The element creates one and calls it; input and panels
-// change the scenario only through the edit methods below.
+// change the scenario only through the edit methods below. Over 500 lines: it is the one owner
+// of the simulation and the model, and every edit and gesture keeps both in step here.
 //
-// Edits. One method per edit: moveRobot, moveGoal, moveObstacle, resizeObstacle, setParam,
-// addRobot, removeRobot, addObstacle, removeObstacle; and edit(scenario) for undo, imports and
-// links. Each one changes the simulation and the model in place and re-predicts, or throws the
-// core's Error (naming the field) and leaves both as they were. Each calls the facade's method
-// of the same name (`pg.moveGoal(i, x, y, θ)`, …), which checks only what the edit touches and
-// serialises nothing; only `edit(scenario)` passes a whole scenario.
+// Edits: one method per edit (moveRobot, moveGoal, moveObstacle, resizeObstacle, setParam,
+// addRobot, removeRobot, addObstacle, removeObstacle), each calling the facade's method of the
+// same name, which checks only what it touches and serialises nothing; edit(scenario) replaces
+// the whole scene (undo, imports, links). An edit the core refuses throws its Error (naming the
+// field) and changes nothing; one it takes is made to the model in place too.
 //
-// Gestures. What a person does (a drag, a key, a button, a field) is one gesture: begin(),
-// any number of edits, commit(kind). The history keeps the scenario text before its first
-// edit; commit pushes it as one undo entry (if the scenario changed) and sends one `change`
-// event.
-// While a gesture lasts the model is updated in place: nothing serialises or re-reads the
-// whole scenario per pointer move. Commit reads the core's scenario once, so that the model
-// holds the core's own numbers again (and the bounds it resolves when a scenario has none).
-//
-// Why this file is longer than the others (about 540 lines): every change of the simulation
-// goes through it, one method each, beside the documents, the clock and the gestures that call
-// them. Split apart, one invariant (the model equals the core's scenario after every gesture)
-// would live in two files.
+// Gestures: what a person does (a drag, a key, a button, a field) is begin(), any number of
+// edits, commit(kind): one undo entry (the scenario text before its first edit, if it changed)
+// and one `change` event. Nothing reads or serialises the whole scenario per pointer move;
+// commit reads the core's scenario once, so that the model holds the core's own values again
+// (and the bounds it resolves for a scenario that has none).
 
 import { fetchScenarioText } from '../io.js';
 import { buildLegend } from '../panels/legend.js';
@@ -42,7 +35,7 @@ import { LiveViews, WASM_READY } from './wasm-views.js';
 const STEP_TIME_S = 0.1;
 /** θ(0) of the integral curves until the element says otherwise (degrees): the paper's Fig. 1. */
 export const DEFAULT_THETA0_DEG = 90;
-/** The field overlays. */
+/** The field overlays. @type {import('../dvf-playground.js').FieldMode[]} */
 export const FIELD_MODES = ['arrows', 'curves', 'none'];
 
 /**
@@ -80,6 +73,7 @@ export class Controller {
     this.selection = null;
     /** The inspected robot: its field is drawn, the plots and the panel show it. */
     this.focusRobot = 0;
+    /** @type {import('../dvf-playground.js').FieldMode} */
     this.fieldMode = 'arrows';
     this.theta0Deg = DEFAULT_THETA0_DEG;
     this.showSensing = false;
@@ -268,124 +262,92 @@ export class Controller {
 
   /** Moves robot `i` to (x, y, θ): its start at t = 0, where it is now (a nudge) later. */
   moveRobot(i, x, y, theta) {
-    const robot = this.#robot(i);
     const atStart = this.views.time === 0;
-    if (atStart) this.history.willChange(() => this.text());
-    this.#wasm(() => this.pg.moveRobot(i, x, y, theta));
-    if (atStart) robot.start = [x, y, theta];
+    this.#edit(atStart, () => this.pg.moveRobot(i, x, y, theta));
+    if (atStart) this.model.robots[i].start = [x, y, theta];
     this.#changed();
   }
 
   /** Moves robot `i`'s goal to (x, y, θ). */
   moveGoal(i, x, y, theta) {
-    this.#assign(this.#robot(i), { goal: [x, y, theta] }, () => this.pg.moveGoal(i, x, y, theta));
+    this.#edit(true, () => this.pg.moveGoal(i, x, y, theta));
+    this.model.robots[i].goal = [x, y, theta];
+    this.#changed();
   }
 
   /** Moves obstacle `k`'s centre to (x, y). */
   moveObstacle(k, x, y) {
-    this.#assign(this.#obstacle(k), { center: [x, y] }, () => this.pg.moveObstacle(k, x, y));
+    this.#edit(true, () => this.pg.moveObstacle(k, x, y));
+    this.model.obstacles[k].center = [x, y];
+    this.#changed();
   }
 
   /** Gives obstacle `k` disc radius `radius` (r_o) and influence radius `influence` (R_o). */
   resizeObstacle(k, radius, influence) {
-    this.#assign(this.#obstacle(k), { radius, influence }, () => this.pg.resizeObstacle(k, radius, influence));
+    this.#edit(true, () => this.pg.resizeObstacle(k, radius, influence));
+    Object.assign(this.model.obstacles[k], { radius, influence });
+    this.#changed();
   }
 
-  /** Sets `params[name]` to `value` (a number, null for "none", or the avoidance mode). */
+  /**
+   * Sets parameter `name` to `value` (a number, null for "none", or the avoidance mode), or
+   * the scenario's `duration` or `dt`.
+   */
   setParam(name, value) {
-    this.#assign(this.model.params, { [name]: value }, () => this.pg.setParam(name, value));
+    this.#edit(true, () => this.pg.setParam(name, value));
+    if (name === 'duration' || name === 'dt') this.model[name] = value;
+    else this.model.params[name] = value;
+    this.#changed();
   }
 
   /** Adds a robot from `start` to `goal` ([x, y, θ] each); returns its index. */
-  addRobot(start, goal) {
-    const robots = this.model.robots;
-    const [sx, sy, st] = start;
-    const [gx, gy, gt] = goal;
-    const robot = { start: [sx, sy, st], goal: [gx, gy, gt] };
-    this.#splice(robots, robots.length, 0, [robot], () => this.pg.addRobot(sx, sy, st, gx, gy, gt));
-    return robots.length - 1;
+  addRobot([sx, sy, stheta], [gx, gy, gtheta]) {
+    this.#edit(true, () => this.pg.addRobot(sx, sy, stheta, gx, gy, gtheta));
+    this.model.robots.push({ start: [sx, sy, stheta], goal: [gx, gy, gtheta] });
+    this.#changed();
+    return this.model.robots.length - 1;
   }
 
-  /** Removes robot `i`. */
+  /** Removes robot `i`; the robots after it move down one index. */
   removeRobot(i) {
-    this.#robot(i);
-    this.#splice(this.model.robots, i, 1, [], () => this.pg.removeRobot(i));
+    this.#edit(true, () => this.pg.removeRobot(i));
+    this.model.robots.splice(i, 1);
+    this.#changed();
   }
 
   /** Adds `obstacle` ({center, radius, influence}); returns its index. */
-  addObstacle({ center, radius, influence }) {
-    const obstacles = this.model.obstacles;
-    const o = { center: [center[0], center[1]], radius, influence };
-    this.#splice(obstacles, obstacles.length, 0, [o], () =>
-      this.pg.addObstacle(o.center[0], o.center[1], radius, influence),
-    );
-    return obstacles.length - 1;
+  addObstacle({ center: [x, y], radius, influence }) {
+    this.#edit(true, () => this.pg.addObstacle(x, y, radius, influence));
+    this.model.obstacles.push({ center: [x, y], radius, influence });
+    this.#changed();
+    return this.model.obstacles.length - 1;
   }
 
-  /** Removes obstacle `k`. */
+  /** Removes obstacle `k`; the obstacles after it move down one index. */
   removeObstacle(k) {
-    this.#obstacle(k);
-    this.#splice(this.model.obstacles, k, 1, [], () => this.pg.removeObstacle(k));
+    this.#edit(true, () => this.pg.removeObstacle(k));
+    this.model.obstacles.splice(k, 1);
+    this.#changed();
   }
 
   /** Replaces the whole scenario (object or JSON text): undo, imports and links. */
   edit(scenario) {
-    this.history.willChange(() => this.text());
-    this.#wasm(() => this.pg.edit(scenario));
+    this.#edit(true, () => this.pg.edit(scenario));
     this.model = this.pg.scenario();
     this.#changed();
   }
 
-  /** Sets `fields` on `part` of the model and makes the facade's `call`; on an error puts them back. */
-  #assign(part, fields, call) {
-    const old = Object.fromEntries(Object.keys(fields).map((key) => [key, part[key]]));
-    this.#editModel(
-      () => Object.assign(part, fields),
-      () => Object.assign(part, old),
-      call,
-    );
-  }
-
-  /** Splices `insert` into `list` of the model and makes the facade's `call`; on an error splices it back. */
-  #splice(list, at, remove, insert, call) {
-    let removed = [];
-    this.#editModel(
-      () => {
-        removed = list.splice(at, remove, ...insert);
-      },
-      () => list.splice(at, insert.length, ...removed),
-      call,
-    );
-  }
-
-  /** Changes the model by `change()` and makes the facade's `call`; `restore()` undoes the change on error. */
-  #editModel(change, restore, call) {
-    this.history.willChange(() => this.text());
-    change();
-    try {
-      this.#wasm(call);
-    } catch (e) {
-      restore();
-      throw e;
-    }
-    this.#changed();
-  }
-
-  /** Calls into wasm for an edit, timed for the benchmarks (`stats.lastEditMs`). */
-  #wasm(call) {
+  /**
+   * Makes the facade's `call` for an edit, timed for the benchmarks (`stats.lastEditMs`);
+   * before it, when the edit changes the `scenario` (not a nudge at t > 0), the gesture keeps
+   * the scenario as it was for undo. The call throws the core's Error and changes nothing, or
+   * succeeds: then, and only then, the caller updates the model.
+   */
+  #edit(scenario, call) {
+    if (scenario) this.history.willChange(() => this.text());
     const t0 = performance.now();
     call();
     this.loop.stats.lastEditMs = performance.now() - t0;
-  }
-
-  /** Robot `i` of the model, or the core's error for a bad index. */
-  #robot(i) {
-    return item(this.model.robots, i, 'robot', 'robots');
-  }
-
-  /** Obstacle `k` of the model, or an error naming it. */
-  #obstacle(k) {
-    return item(this.model.obstacles, k, 'obstacles', 'obstacles');
   }
 
   /** After the simulation changed. */
@@ -450,13 +412,8 @@ export class Controller {
 
   #travel(direction) {
     if (!this.pg) return;
-    if (
-      this.history.travel(
-        direction,
-        () => this.text(),
-        (text) => this.#apply(text),
-      )
-    ) {
+    const now = () => this.text();
+    if (this.history.travel(direction, now, (text) => this.#apply(text))) {
       this.params.fill(this.model.params, this.root.activeElement);
       this.#emit(direction);
     }
@@ -540,12 +497,4 @@ export class Controller {
   requestDraw() {
     this.loop.requestDraw();
   }
-}
-
-/** `list[i]`, or an Error in the core's words for an index out of range. */
-function item(list, i, field, plural) {
-  if (!(Number.isInteger(i) && i >= 0 && i < list.length)) {
-    throw new Error(`${field}: index ${i} is out of range (the scenario has ${list.length} ${plural})`);
-  }
-  return list[i];
 }
