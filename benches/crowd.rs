@@ -51,7 +51,7 @@ fn controller(c: &mut Criterion) {
         let (starts, goals) = poses(n);
         let positions: Vec<DVec2> = starts.iter().map(|p| p.p).collect();
         let mut near = Neighbours::new();
-        near.build(|i| positions[i], n, params.sense_radius);
+        near.build(&positions, params.sense_radius);
         let sensed: Vec<Vec<DVec2>> = (0..n)
             .map(|i| near.of(i).iter().map(|&j| positions[j as usize]).collect())
             .collect();

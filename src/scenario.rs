@@ -118,22 +118,32 @@ impl Scenario {
     /// [`Error::Invalid`] for values out of their documented range.
     pub fn from_json(text: &str) -> Result<Self, Error> {
         // Syntax first, so that a truncated file is reported as such (with line and column)
-        // rather than as a type error somewhere inside it.
-        let value: serde_json::Value = serde_json::from_str(text).map_err(|e| Error::Parse {
+        // rather than as a type error somewhere inside it. `IgnoredAny` checks the syntax
+        // without building the document.
+        serde_json::from_str::<serde::de::IgnoredAny>(text).map_err(|e| Error::Parse {
             field: String::new(),
             message: format!("not valid JSON: {e}"),
         })?;
-        if !value.is_object() {
+        if !text.trim_start().starts_with('{') {
             return Err(Error::Parse {
                 field: String::new(),
                 message: "expected a JSON object with a \"robots\" list".into(),
             });
         }
-        let s: Scenario = serde_path_to_error::deserialize(value).map_err(|e| {
+        // Then the types, straight from the text: the path names the field, so the position
+        // serde_json appends to a type error adds nothing and is left out.
+        let mut de = serde_json::Deserializer::from_str(text);
+        let s: Scenario = serde_path_to_error::deserialize(&mut de).map_err(|e| {
             let path = e.path().to_string();
+            let inner = e.into_inner();
+            let mut message = inner.to_string();
+            let at = format!(" at line {} column {}", inner.line(), inner.column());
+            if inner.line() > 0 && message.ends_with(&at) {
+                message.truncate(message.len() - at.len());
+            }
             Error::Parse {
                 field: if path == "." { String::new() } else { path },
-                message: e.into_inner().to_string(),
+                message,
             }
         })?;
         s.validate()?;
@@ -306,69 +316,100 @@ impl Scenario {
             }
         }
         for (i, o) in self.obstacles.iter().enumerate() {
-            obstacle_numbers(i, o)?;
+            finite(&format!("obstacles[{i}].center[0]"), o.center.x)?;
+            finite(&format!("obstacles[{i}].center[1]"), o.center.y)?;
+            finite(&format!("obstacles[{i}].radius"), o.radius)?;
+            positive(&format!("obstacles[{i}].radius"), o.radius)?;
+            finite(&format!("obstacles[{i}].influence"), o.influence)?;
+            if o.influence <= o.radius {
+                return invalid(
+                    &format!("obstacles[{i}].influence"),
+                    format!("must exceed the radius ({})", o.radius),
+                );
+            }
         }
         for (i, r) in self.robots.iter().enumerate() {
-            robot_among_obstacles(i, r, self.obstacles.iter().enumerate())?;
+            for (key, pose) in [("start", r.start_pose()), ("goal", r.goal_pose())] {
+                for (j, o) in self.obstacles.iter().enumerate() {
+                    if o.clearance(pose.p) <= 0.0 {
+                        return invalid(
+                            &format!("robots[{i}].{key}"),
+                            format!("lies inside obstacles[{j}] (radius {})", o.radius),
+                        );
+                    }
+                }
+            }
+            let goal = r.goal_pose().p;
+            for (j, o) in self.obstacles.iter().enumerate() {
+                if goal.distance(o.center) < o.influence {
+                    return invalid(
+                        &format!("robots[{i}].goal"),
+                        format!(
+                            "lies in the influence ring of obstacles[{j}] ({} from its centre, influence {}): the ring's circular field would keep the robot from settling there; move the goal out of the ring or shrink the ring",
+                            goal.distance(o.center),
+                            o.influence
+                        ),
+                    );
+                }
+            }
         }
         if !self.independent {
             let safe = 2.0 * p.safe_radius;
             let starts: Vec<DVec2> = self.robots.iter().map(|r| r.start_pose().p).collect();
             if let Some((i, j, d)) = crate::grid::closest_pair_below(&starts, safe) {
-                return too_close("start", i, j, d, safe);
+                return invalid(
+                    &format!("robots[{j}].start"),
+                    format!("is {d} from robots[{i}].start, closer than the safe distance 2 · safe_radius = {safe}: robots may not start in each other's safe disc"),
+                );
             }
             let goals: Vec<DVec2> = self.robots.iter().map(|r| r.goal_pose().p).collect();
             if let Some((i, j, d)) = crate::grid::closest_pair_below(&goals, safe) {
-                return too_close("goal", i, j, d, safe);
+                return invalid(
+                    &format!("robots[{j}].goal"),
+                    format!("is {d} from robots[{i}].goal, closer than the safe distance 2 · safe_radius = {safe}: both robots cannot settle there"),
+                );
             }
         }
         Ok(())
     }
 
-    /// What [`Scenario::validate`] checks of robot `index` alone, in the same order and with
-    /// the same messages, for a scenario valid but for that robot (an edit of one robot): its
-    /// numbers, the obstacles, and its start's and goal's distances to the other robots' (the
-    /// pair [`Scenario::validate`] would name first). O(robots + obstacles), no allocation.
+    /// [`Scenario::validate`] for a scenario that was valid before robot `index` changed:
+    /// the checks that concern that robot alone (its numbers, the obstacles, its start's and
+    /// goal's distances to the other robots'), O(robots + obstacles) without allocating; only
+    /// when one fails does the whole validation run, so that the error is exactly the one
+    /// [`Scenario::validate`] gives.
     ///
     /// # Errors
-    /// The first offending field, as [`Scenario::validate`] would name it.
+    /// An index out of range, or the first offending field as [`Scenario::validate`] names it.
     pub fn validate_robot(&self, index: usize) -> Result<(), Error> {
         let count = self.robots.len();
         let r = self
             .robots
             .get(index)
             .ok_or(Error::RobotIndex { index, count })?;
-        for (key, v) in [("start", r.start), ("goal", r.goal)] {
-            for (k, x) in v.iter().enumerate() {
-                finite(&format!("robots[{index}].{key}[{k}]"), *x)?;
-            }
+        let (start, goal) = (r.start_pose().p, r.goal_pose().p);
+        let numbers = r.start.iter().chain(&r.goal).all(|v| in_range(*v));
+        let obstacles = self.obstacles.iter().all(|o| clear_of(o, start, goal));
+        let safe = 2.0 * self.params.safe_radius;
+        let apart = self.independent
+            || self.robots.iter().enumerate().all(|(k, q)| {
+                k == index
+                    || (q.start_pose().p.distance(start) >= safe
+                        && q.goal_pose().p.distance(goal) >= safe)
+            });
+        if numbers && obstacles && apart {
+            Ok(())
+        } else {
+            self.validate()
         }
-        robot_among_obstacles(index, r, self.obstacles.iter().enumerate())?;
-        if !self.independent {
-            let safe = 2.0 * self.params.safe_radius;
-            for key in ["start", "goal"] {
-                let at = |r: &RobotSpec| {
-                    if key == "start" {
-                        r.start_pose().p
-                    } else {
-                        r.goal_pose().p
-                    }
-                };
-                let points = self.robots.iter().map(at);
-                if let Some((i, j, d)) = first_pair_with(points, index, safe) {
-                    return too_close(key, i, j, d, safe);
-                }
-            }
-        }
-        Ok(())
     }
 
-    /// What [`Scenario::validate`] checks of obstacle `index` alone, in the same order and
-    /// with the same messages, for a scenario valid but for that obstacle: its numbers, and
-    /// every robot's start and goal against it. O(robots).
+    /// [`Scenario::validate`] for a scenario that was valid before obstacle `index` changed:
+    /// its numbers, and every robot's start and goal against it, O(robots); the whole
+    /// validation runs only when one fails (see [`Scenario::validate_robot`]).
     ///
     /// # Errors
-    /// The first offending field, as [`Scenario::validate`] would name it.
+    /// An index out of range, or the first offending field as [`Scenario::validate`] names it.
     pub fn validate_obstacle(&self, index: usize) -> Result<(), Error> {
         let o = self.obstacles.get(index).ok_or_else(|| Error::Invalid {
             field: "obstacle".into(),
@@ -377,104 +418,32 @@ impl Scenario {
                 self.obstacles.len()
             ),
         })?;
-        obstacle_numbers(index, o)?;
-        for (i, r) in self.robots.iter().enumerate() {
-            robot_among_obstacles(i, r, std::iter::once((index, o)))?;
+        let numbers = [o.center.x, o.center.y, o.radius, o.influence]
+            .into_iter()
+            .all(in_range)
+            && o.radius > 0.0
+            && o.influence > o.radius;
+        let clear = self
+            .robots
+            .iter()
+            .all(|r| clear_of(o, r.start_pose().p, r.goal_pose().p));
+        if numbers && clear {
+            Ok(())
+        } else {
+            self.validate()
         }
-        Ok(())
     }
 }
 
-/// Obstacle `i`'s own numbers: finite, a positive radius, a ring outside the disc.
-fn obstacle_numbers(i: usize, o: &Obstacle) -> Result<(), Error> {
-    finite(&format!("obstacles[{i}].center[0]"), o.center.x)?;
-    finite(&format!("obstacles[{i}].center[1]"), o.center.y)?;
-    finite(&format!("obstacles[{i}].radius"), o.radius)?;
-    positive(&format!("obstacles[{i}].radius"), o.radius)?;
-    finite(&format!("obstacles[{i}].influence"), o.influence)?;
-    if o.influence <= o.radius {
-        return invalid(
-            &format!("obstacles[{i}].influence"),
-            format!("must exceed the radius ({})", o.radius),
-        );
-    }
-    Ok(())
+/// What `finite` accepts.
+fn in_range(v: f64) -> bool {
+    v.is_finite() && v.abs() <= MAX_MAGNITUDE
 }
 
-/// Robot `i`'s start and goal outside every one of `obstacles` (`(index, obstacle)`), and its
-/// goal outside their influence rings.
-fn robot_among_obstacles<'a>(
-    i: usize,
-    r: &RobotSpec,
-    obstacles: impl Iterator<Item = (usize, &'a Obstacle)> + Clone,
-) -> Result<(), Error> {
-    for (key, pose) in [("start", r.start_pose()), ("goal", r.goal_pose())] {
-        for (j, o) in obstacles.clone() {
-            if o.clearance(pose.p) <= 0.0 {
-                return invalid(
-                    &format!("robots[{i}].{key}"),
-                    format!("lies inside obstacles[{j}] (radius {})", o.radius),
-                );
-            }
-        }
-    }
-    let goal = r.goal_pose().p;
-    for (j, o) in obstacles {
-        if goal.distance(o.center) < o.influence {
-            return invalid(
-                &format!("robots[{i}].goal"),
-                format!(
-                    "lies in the influence ring of obstacles[{j}] ({} from its centre, influence {}): the ring's circular field would keep the robot from settling there; move the goal out of the ring or shrink the ring",
-                    goal.distance(o.center),
-                    o.influence
-                ),
-            );
-        }
-    }
-    Ok(())
-}
-
-/// The message for robots `i < j` whose `key` ("start" or "goal") are `d < safe` apart.
-fn too_close<T>(key: &str, i: usize, j: usize, d: f64, safe: f64) -> Result<T, Error> {
-    let why = if key == "start" {
-        "robots may not start in each other's safe disc"
-    } else {
-        "both robots cannot settle there"
-    };
-    invalid(
-        &format!("robots[{j}].{key}"),
-        format!("is {d} from robots[{i}].{key}, closer than the safe distance 2 · safe_radius = {safe}: {why}"),
-    )
-}
-
-/// Among the pairs of `points` that contain `index` and are closer than `limit`, the one a scan
-/// over all pairs (`for j { for i < j }`, [`crate::grid::closest_pair_below`]) meets first:
-/// `(i, j, distance)`, `i < j`. When the other pairs are all at least `limit` apart, it is the
-/// pair that scan returns. O(N).
-#[must_use]
-pub fn first_pair_with(
-    points: impl Iterator<Item = DVec2> + Clone,
-    index: usize,
-    limit: f64,
-) -> Option<(usize, usize, f64)> {
-    let p = points.clone().nth(index)?;
-    let mut later = None;
-    for (k, q) in points.enumerate() {
-        if k == index {
-            continue;
-        }
-        let d = q.distance(p);
-        if d < limit {
-            if k < index {
-                // The scan meets `(k, index)` at `j = index` before any `(index, k' > index)`.
-                return Some((k, index, d));
-            }
-            if later.is_none() {
-                later = Some((index, k, d));
-            }
-        }
-    }
-    later
+/// What [`Scenario::validate`] asks of a robot's `start` and `goal` and an obstacle: both
+/// outside the disc, the goal outside the ring.
+fn clear_of(o: &Obstacle, start: DVec2, goal: DVec2) -> bool {
+    o.clearance(start) > 0.0 && o.clearance(goal) > 0.0 && goal.distance(o.center) >= o.influence
 }
 
 fn invalid<T>(field: &str, message: impl Into<String>) -> Result<T, Error> {

@@ -137,7 +137,7 @@ fn playground_arrays_have_the_documented_layouts() {
         (1, 1)
     );
     assert_eq!(pg.live().trails().len_of(0), 1);
-    let samples = pg.layout_now().predicted_samples;
+    let samples = pg.layout_now().predicted_times.length;
     assert!(samples >= 2);
     let predicted = buf(pg.layout_now().predicted).to_vec();
     assert_eq!(predicted.len(), n * samples * POSE_STRIDE);
@@ -233,9 +233,9 @@ fn pointers_address_the_arrays_they_name() {
                     "{key}"
                 );
             }
-            assert_eq!(get(&js, "robots").as_f64(), Some(n as f64));
+            assert_eq!(l.poses.length, n * l.poses.stride);
             pg.step(7.0).unwrap();
-            let cap = pg.layout_now().trail_capacity;
+            let cap = pg.layout_now().trail_times.length;
             assert_eq!(
                 view(pg.layout_now().poses.pointer, n * POSE_STRIDE),
                 pg.live().poses().to_vec()
@@ -273,7 +273,7 @@ fn pointers_address_the_arrays_they_name() {
             let seen = view(pg.layout_now().field.pointer, len);
             let copy = pg.live().field().to_vec();
             assert_eq!(seen, copy);
-            let samples = pg.layout_now().predicted_samples;
+            let samples = pg.layout_now().predicted_times.length;
             assert_eq!(
                 view(pg.layout_now().predicted.pointer, n * samples * POSE_STRIDE),
                 pg.live().prediction().poses().to_vec()
@@ -284,11 +284,11 @@ fn pointers_address_the_arrays_they_name() {
             );
         }
         if n > MAX_PREDICTED_ROBOTS {
-            assert_eq!(pg.layout_now().predicted_samples, 0);
-            assert!(pg.layout_now().trail_capacity < MAX_TRAIL_SAMPLES);
+            assert_eq!(pg.layout_now().predicted_times.length, 0);
+            assert!(pg.layout_now().trail_times.length < MAX_TRAIL_SAMPLES);
         } else {
-            assert!(pg.layout_now().predicted_samples >= 2);
-            assert_eq!(pg.layout_now().trail_capacity, MAX_TRAIL_SAMPLES);
+            assert!(pg.layout_now().predicted_times.length >= 2);
+            assert_eq!(pg.layout_now().trail_times.length, MAX_TRAIL_SAMPLES);
         }
     }
 }

@@ -61,12 +61,13 @@ impl Cells {
         Self::default()
     }
 
-    /// Sorts the `n` points at `positions(0..n)` into cells for `reach`, reusing the buffers.
+    /// Sorts `points` into cells for `reach`, reusing the buffers.
     /// A non-finite position lands in some cell and is nobody's neighbour (its distance is
     /// not `≤ reach`).
-    pub fn build(&mut self, positions: impl Fn(usize) -> DVec2, n: usize, reach: f64) {
-        let far = (0..n)
-            .map(&positions)
+    pub fn build(&mut self, points: &[DVec2], reach: f64) {
+        let n = points.len();
+        let far = points
+            .iter()
             .filter(|p| p.is_finite())
             .fold(0.0_f64, |m, p| m.max(p.abs().max_element()));
         self.cell = cell_side(reach, far);
@@ -77,8 +78,8 @@ impl Cells {
         self.start.clear();
         self.start.resize(buckets + 1, 0);
         self.bucket_of.clear();
-        for i in 0..n {
-            let (cx, cy) = self.coords(positions(i));
+        for &p in points {
+            let (cx, cy) = self.coords(p);
             let b = bucket(cx, cy, buckets as u64 - 1);
             self.bucket_of.push(b as u32);
             self.start[b + 1] += 1;
@@ -164,12 +165,12 @@ impl Cells {
         (runs, k)
     }
 
-    /// Appends to `out` the points `j` (not `except`) with `|positions(j) − p|² ≤ reach²`, in
+    /// Appends to `out` the points `j` (not `except`) with `|points[j] − p|² ≤ reach²`, in
     /// ascending index: the answer of a scan over all points. `reach` is at most the reach of
     /// the build.
     pub fn within(
         &self,
-        positions: impl Fn(usize) -> DVec2,
+        points: &[DVec2],
         p: DVec2,
         reach: f64,
         except: usize,
@@ -187,7 +188,7 @@ impl Cells {
                     .copied()
                     .filter(|&j| {
                         j as usize != except
-                            && positions(j as usize).distance_squared(p) <= reach * reach
+                            && points[j as usize].distance_squared(p) <= reach * reach
                     }),
             );
         }

@@ -45,7 +45,7 @@ mod tests {
     /// Every list equals the scan over all robots, in the same (ascending) order.
     fn check(points: &[DVec2], reach: f64) {
         let mut g = Neighbours::new();
-        g.build(|i| points[i], points.len(), reach);
+        g.build(points, reach);
         for (i, p) in points.iter().enumerate() {
             let scan: Vec<u32> = (0..points.len())
                 .filter(|&j| j != i && points[j].distance_squared(*p) <= reach * reach)
@@ -211,9 +211,10 @@ mod tests {
             .map(|k| DVec2::new((k % 10) as f64, (k / 10) as f64))
             .collect();
         let mut g = Neighbours::new();
-        g.build(|i| points[i], points.len(), 1.5);
+        g.build(&points, 1.5);
         let (start, order, list, ptr) = g.buffers();
-        g.build(|i| points[i] * 0.999, points.len(), 1.5);
+        let scaled: Vec<DVec2> = points.iter().map(|p| *p * 0.999).collect();
+        g.build(&scaled, 1.5);
         let (start_now, order_now, list_now, ptr_now) = g.buffers();
         assert_eq!(order, order_now);
         assert_eq!(list, list_now);

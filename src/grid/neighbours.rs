@@ -31,24 +31,24 @@ impl Neighbours {
         Self::default()
     }
 
-    /// Rebuilds the lists for the `n` robots at `positions(0..n)` and a `reach` (scenario
+    /// Rebuilds the lists for the robots at `points` and a `reach` (scenario
     /// units). Reuses the buffers: after the first call with as many robots, it allocates only
     /// when the lists' total grows past its previous maximum.
     ///
     /// A non-finite position is nobody's neighbour (its distance is not `≤ reach`), as in a
     /// scan over all pairs.
-    pub fn build(&mut self, positions: impl Fn(usize) -> DVec2, n: usize, reach: f64) {
+    pub fn build(&mut self, points: &[DVec2], reach: f64) {
+        let n = points.len();
         if n <= FEW_ROBOTS {
             // A few robots: the scan over all pairs costs less than the cells (the paper's
             // examples have ten), and it is the definition the lists meet.
             let reach2 = reach * reach;
             self.first.clear();
             self.list.clear();
-            for i in 0..n {
+            for (i, &p) in points.iter().enumerate() {
                 self.first.push(self.list.len() as u32);
-                let p = positions(i);
-                for j in 0..n {
-                    if j != i && positions(j).distance_squared(p) <= reach2 {
+                for (j, q) in points.iter().enumerate() {
+                    if j != i && q.distance_squared(p) <= reach2 {
                         self.list.push(j as u32);
                     }
                 }
@@ -56,7 +56,7 @@ impl Neighbours {
             self.first.push(self.list.len() as u32);
             return;
         }
-        self.cells.build(&positions, n, reach);
+        self.cells.build(points, reach);
 
         // The hits of each robot, in bucket order: the robots of higher index within reach
         // among the 3 × 3 cells around it (a robot within reach is at most one cell away along
@@ -70,7 +70,7 @@ impl Neighbours {
         let mut count = 0usize;
         for i in 0..n {
             self.upper.push(count as u32);
-            let p = positions(i);
+            let p = points[i];
             let (runs, k) = self.cells.block(self.cells.coords(p));
             for &(from, to) in &runs[..k] {
                 let candidates = &self.cells.order()[from as usize..to as usize];
@@ -79,8 +79,7 @@ impl Neighbours {
                 }
                 for &j in candidates {
                     self.hits[count] = j;
-                    let hit =
-                        (j as usize > i) & (positions(j as usize).distance_squared(p) <= reach2);
+                    let hit = (j as usize > i) & (points[j as usize].distance_squared(p) <= reach2);
                     count += usize::from(hit);
                 }
             }
@@ -126,12 +125,6 @@ impl Neighbours {
                 *slot += 1;
             }
         }
-    }
-
-    /// [`Neighbours::build`] for a slice of positions (one instance of the generic build for
-    /// every caller with a slice: the wasm module stays smaller).
-    pub fn build_points(&mut self, points: &[DVec2], reach: f64) {
-        self.build(|i| points[i], points.len(), reach);
     }
 
     /// Makes room for `factor` times as many neighbours in all as the last build found, so

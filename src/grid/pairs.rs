@@ -15,7 +15,7 @@ pub fn closest_pair_below(points: &[DVec2], limit: f64) -> Option<(usize, usize,
         return None;
     }
     let mut g = Neighbours::new();
-    g.build_points(points, limit);
+    g.build(points, limit);
     // Each list is ascending, so its first `i < j` within the limit is the scan's.
     (0..points.len()).find_map(|j| {
         g.of(j)
@@ -45,7 +45,7 @@ pub fn min_pair_distance(points: &[DVec2], reach: f64, search: &mut Neighbours) 
         1.0
     };
     loop {
-        search.build_points(points, reach);
+        search.build(points, reach);
         let mut m = f64::INFINITY;
         for (i, p) in points.iter().enumerate() {
             for &j in search.of(i) {

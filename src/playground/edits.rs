@@ -12,7 +12,8 @@
 use super::{Live, MAX_LIVE_STEPS};
 use crate::error::Error;
 use crate::obstacle::Obstacle;
-use crate::scenario::{first_pair_with, RobotSpec, Scenario, MAX_MAGNITUDE};
+use crate::params::Avoidance;
+use crate::scenario::{RobotSpec, Scenario, MAX_MAGNITUDE};
 use crate::se2::Pose;
 use crate::sim::Simulation;
 use glam::DVec2;
@@ -47,25 +48,27 @@ impl Live {
             spec.start = pose.to_array();
             return self.set_robot(index, spec);
         }
-        check_pose_now(index, pose, &self.scenario.obstacles, self.time())?;
-        if !self.scenario.independent {
-            let safe = 2.0 * self.scenario.params.safe_radius;
-            let robots = self.sim.robots();
-            let at = |k: usize| if k == index { pose.p } else { robots[k].pose.p };
-            let points = (0..robots.len()).map(at);
-            if let Some((i, j, d)) = first_pair_with(points, index, safe) {
-                return Err(too_close_now(i, j, d, safe, self.time()));
-            }
-        }
+        // What the move touches, cheaply; the whole check of `resume` runs (and names the
+        // field) only when something fails.
+        let safe = 2.0 * self.scenario.params.safe_radius;
+        let robots = self.sim.robots();
+        let fine = pose
+            .to_array()
+            .iter()
+            .all(|v| v.is_finite() && v.abs() <= MAX_MAGNITUDE)
+            && self
+                .scenario
+                .obstacles
+                .iter()
+                .all(|o| o.clearance(pose.p) > 0.0)
+            && (self.scenario.independent
+                || robots
+                    .iter()
+                    .enumerate()
+                    .all(|(k, r)| k == index || r.pose.p.distance(pose.p) >= safe));
         let goal = self.scenario.robots[index].goal_pose();
-        if self.sim.place_robot(index, pose, goal) {
-            self.refresh();
-            self.predict();
-            return Ok(());
-        }
-        let mut now: Vec<Pose> = self.sim.robots().iter().map(|r| r.pose).collect();
-        now[index] = pose;
-        self.resume(self.scenario.clone(), &now)
+        let placed = fine && self.sim.place_robot(index, pose, goal);
+        self.settle(placed, Some((index, pose)))
     }
 
     /// Moves robot `index`'s goal to `goal`.
@@ -95,19 +98,14 @@ impl Live {
         } else {
             self.sim.robots()[index].pose
         };
-        if self.sim.place_robot(index, pose, spec.goal_pose()) {
-            if fresh {
-                // The one trail sample at t = 0 is the start.
-                let min_pair = self.pairs.of(&self.sim);
-                let now = self.sim.robots()[index].pose;
-                self.trails.rewrite_newest(index, now, min_pair);
-            }
-            self.refresh();
-            self.predict();
-            return Ok(());
+        let placed = self.sim.place_robot(index, pose, spec.goal_pose());
+        if placed && fresh {
+            // The one trail sample at t = 0 is the start.
+            let min_pair = self.pairs.of(&self.sim);
+            let now = self.sim.robots()[index].pose;
+            self.trails.rewrite_newest(index, now, min_pair);
         }
-        let now: Vec<Pose> = self.sim.robots().iter().map(|r| r.pose).collect();
-        self.resume(self.scenario.clone(), &now)
+        self.settle(placed, None)
     }
 
     /// Moves obstacle `index`'s centre to `center`.
@@ -147,19 +145,30 @@ impl Live {
         let old = self.scenario.obstacles[index];
         self.scenario.obstacles[index] = o;
         let mut valid = self.scenario.validate_obstacle(index);
-        if valid.is_ok() && self.steps() > 0 {
-            let time = self.time();
-            let robots = self.sim.robots();
-            valid = robots.iter().enumerate().try_for_each(|(i, r)| {
-                check_pose_now(i, r.pose, std::slice::from_ref(&o), time)
-                    .map_err(|e| renumber_obstacle(e, index))
-            });
+        // At t > 0 the robots must be clear of it where they are now; `resume` names the
+        // first that is not.
+        let clear = self
+            .sim
+            .robots()
+            .iter()
+            .all(|r| o.clearance(r.pose.p) > 0.0);
+        if valid.is_ok() && self.steps() > 0 && !clear {
+            let now: Vec<Pose> = self.sim.robots().iter().map(|r| r.pose).collect();
+            valid = self.resume(self.scenario.clone(), &now);
         }
         if let Err(e) = valid {
             self.scenario.obstacles[index] = old;
             return Err(e);
         }
-        if self.sim.place_obstacle(index, o) {
+        let placed = self.sim.place_obstacle(index, o);
+        self.settle(placed, None)
+    }
+
+    /// Ends an edit of `self.scenario`: when the simulation took it in place (`placed`), the
+    /// buffers and the prediction follow; otherwise the simulation is rebuilt, at `t = 0` from
+    /// the scenario, later from where the robots are now (robot `moved.0` at `moved.1`).
+    fn settle(&mut self, placed: bool, moved: Option<(usize, Pose)>) -> Result<(), Error> {
+        if placed {
             self.refresh();
             self.predict();
             return Ok(());
@@ -168,49 +177,61 @@ impl Live {
             self.reset();
             return Ok(());
         }
-        let now: Vec<Pose> = self.sim.robots().iter().map(|r| r.pose).collect();
+        let mut now: Vec<Pose> = self.sim.robots().iter().map(|r| r.pose).collect();
+        if let Some((i, p)) = moved {
+            now[i] = p;
+        }
         self.resume(self.scenario.clone(), &now)
     }
 
     /// Sets one number of the scenario: `duration`, `dt`, or a parameter by its JSON key
-    /// (`k_v`, `barrier_rate`, …; `null` for "none" where a parameter is optional, a string for
-    /// `avoidance`). A parameter touches every robot: the whole scenario is checked and the
-    /// simulation rebuilt.
+    /// (`k_v`, `barrier_rate`, …; [`ParamValue::None`] for "none" where a parameter is
+    /// optional, text for `avoidance`). A parameter touches every robot: the whole scenario is
+    /// checked and the simulation rebuilt.
     ///
     /// # Errors
-    /// An unknown name, a value of the wrong type, or the first invalid field of the edited
+    /// An unknown name, a value of the wrong kind, or the first invalid field of the edited
     /// scenario.
-    pub fn set_param(&mut self, name: &str, value: serde_json::Value) -> Result<(), Error> {
+    pub fn set_param(&mut self, name: &str, value: ParamValue) -> Result<(), Error> {
         let mut s = self.scenario.clone();
-        let number = |field: &str| {
-            value.as_f64().ok_or_else(|| Error::Parse {
-                field: field.into(),
-                message: format!("expected a number, not {value}"),
-            })
+        let field = || match name {
+            "duration" | "dt" => name.to_owned(),
+            _ => format!("params.{name}"),
         };
-        match name {
-            "duration" => s.duration = number("duration")?,
-            "dt" => s.dt = number("dt")?,
-            _ => {
-                let field = format!("params.{name}");
-                let mut params = serde_json::to_value(s.params).map_err(|e| Error::Parse {
-                    field: "params".into(),
-                    message: e.to_string(),
-                })?;
-                match params.get_mut(name) {
-                    Some(slot) => *slot = value,
-                    None => {
-                        return Err(Error::Parse {
-                            field,
-                            message: "no such parameter".into(),
-                        })
-                    }
-                }
-                s.params = serde_json::from_value(params).map_err(|e| Error::Parse {
-                    field,
-                    message: e.to_string(),
-                })?;
+        let set = match (slot(&mut s, name), value) {
+            (None, _) => {
+                return Err(Error::Parse {
+                    field: field(),
+                    message: "no such parameter".into(),
+                })
             }
+            (Some(Slot::Number(x)), ParamValue::Number(v)) => {
+                *x = v;
+                true
+            }
+            (Some(Slot::Optional(x)), ParamValue::Number(v)) => {
+                *x = Some(v);
+                true
+            }
+            (Some(Slot::Optional(x)), ParamValue::None) => {
+                *x = None;
+                true
+            }
+            (Some(Slot::Avoidance(x)), ParamValue::Text(t)) => {
+                let mode = match t.as_str() {
+                    "exit" => Some(Avoidance::Exit),
+                    "paper" => Some(Avoidance::Paper),
+                    _ => None,
+                };
+                mode.map(|m| *x = m).is_some()
+            }
+            _ => false,
+        };
+        if !set {
+            return Err(Error::Parse {
+                field: field(),
+                message: "a value of the wrong kind: a number (null where optional; \"exit\" or \"paper\" for avoidance)".into(),
+            });
         }
         self.edit(s)
     }
@@ -318,6 +339,49 @@ impl Live {
     }
 }
 
+/// A value for [`Live::set_param`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum ParamValue {
+    /// A number.
+    Number(f64),
+    /// "None" for an optional parameter (`null` in JSON).
+    None,
+    /// Text (the avoidance mode).
+    Text(String),
+}
+
+/// Where [`Live::set_param`] writes a value.
+enum Slot<'a> {
+    Number(&'a mut f64),
+    Optional(&'a mut Option<f64>),
+    Avoidance(&'a mut Avoidance),
+}
+
+/// The number, optional number or mode of `s` that `name` (a JSON key) names.
+fn slot<'a>(s: &'a mut Scenario, name: &str) -> Option<Slot<'a>> {
+    let p = &mut s.params;
+    Some(match name {
+        "duration" => Slot::Number(&mut s.duration),
+        "dt" => Slot::Number(&mut s.dt),
+        "k_v" => Slot::Number(&mut p.k_v),
+        "k_omega" => Slot::Number(&mut p.k_omega),
+        "k_a" => Slot::Number(&mut p.k_a),
+        "transition_width" => Slot::Number(&mut p.transition_width),
+        "avoid_speed" => Slot::Number(&mut p.avoid_speed),
+        "avoid_radius" => Slot::Number(&mut p.avoid_radius),
+        "safe_radius" => Slot::Number(&mut p.safe_radius),
+        "sense_radius" => Slot::Number(&mut p.sense_radius),
+        "tol_position" => Slot::Number(&mut p.tol_position),
+        "tol_heading" => Slot::Number(&mut p.tol_heading),
+        "align_fade" => Slot::Number(&mut p.align_fade),
+        "v_max" => Slot::Optional(&mut p.v_max),
+        "omega_max" => Slot::Optional(&mut p.omega_max),
+        "barrier_rate" => Slot::Optional(&mut p.barrier_rate),
+        "avoidance" => Slot::Avoidance(&mut p.avoidance),
+        _ => return None,
+    })
+}
+
 /// The scenario checks plus the playground's step limit.
 pub(super) fn check(s: &Scenario) -> Result<(), Error> {
     // The robot count is the scenario's own limit (MAX_LIVE_ROBOTS): validated there.
@@ -360,17 +424,6 @@ fn check_pose_now(i: usize, p: Pose, obstacles: &[Obstacle], time: f64) -> Resul
         }
     }
     Ok(())
-}
-
-/// [`check_pose_now`]'s message about `obstacles[0]` of a one-obstacle list, for obstacle `k`.
-fn renumber_obstacle(e: Error, k: usize) -> Error {
-    match e {
-        Error::Invalid { field, message } => Error::Invalid {
-            field,
-            message: message.replacen("obstacles[0]", &format!("obstacles[{k}]"), 1),
-        },
-        e => e,
-    }
 }
 
 /// Robots `i < j` `d < safe` apart where they are now.

@@ -51,8 +51,9 @@ impl Live {
         let independent = self.scenario.independent;
         let robots = self.sim.robots();
         if !independent {
-            self.field_cells
-                .build(|k| robots[k].pose.p, robots.len(), rs);
+            self.field_points.clear();
+            self.field_points.extend(robots.iter().map(|r| r.pose.p));
+            self.field_cells.build(&self.field_points, rs);
         }
         let [x0, y0, x1, y1] = bounds;
         self.field.clear();
@@ -64,9 +65,9 @@ impl Live {
                 self.neighbours.clear();
                 if !independent {
                     self.near.clear();
-                    let at = |k: usize| robots[k].pose.p;
+                    let points = &self.field_points;
                     self.field_cells
-                        .within(at, pose.p, rs, index, &mut self.near);
+                        .within(points, pose.p, rs, index, &mut self.near);
                     self.neighbours.extend(self.near.iter().map(|&k| {
                         let o = &robots[k as usize];
                         Neighbour {

@@ -88,6 +88,7 @@ pub struct Live {
     /// Scratch kept from call to call: the pair distance, the field view's cells and lists.
     pairs: PairDistance,
     field_cells: Cells,
+    field_points: Vec<DVec2>,
     near: Vec<u32>,
     neighbours: Vec<Neighbour>,
 }
@@ -115,6 +116,7 @@ impl Live {
             curves: Vec::new(),
             pairs: PairDistance::default(),
             field_cells: Cells::new(),
+            field_points: Vec::new(),
             near: Vec::new(),
             neighbours: Vec::new(),
         };

@@ -232,7 +232,7 @@ impl Simulation {
             self.positions.clear();
             self.positions.extend(self.robots.iter().map(|r| r.pose.p));
             let reach = self.reach();
-            self.near.build_points(&self.positions, reach);
+            self.near.build(&self.positions, reach);
         }
     }
 
@@ -251,6 +251,9 @@ impl Simulation {
     /// Robot `i`'s command from what it senses now (the robots within `R_s` at the snapshot's
     /// speeds, the obstacles within `R_s`): the DVF controller made safe by the barrier. The
     /// one place where the method enters the loop (see the module doc).
+    // Not inlined: a step and the in-place edits call it, and one copy keeps the wasm module
+    // small (a call per robot costs nothing next to its evaluation).
+    #[inline(never)]
     fn evaluate_robot(&mut self, i: usize) {
         let rs = self.params.sense_radius;
         let listed = self.listed();

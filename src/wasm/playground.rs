@@ -8,7 +8,9 @@
 //! costs no copy; it is valid until the next call that steps or edits (which may move a buffer,
 //! or grow the memory and detach every view), so a page asks for the layout again after such
 //! calls and re-makes only the views whose pointer or length changed. Stepping never moves the
-//! buffers of a fixed robot count. The layouts (robots in scenario order):
+//! buffers of a fixed robot count. The layouts (robots in scenario order; `robots` is
+//! `poses.length / 3`, `trailCapacity` is `trailTimes.length`, `predictedSamples` is
+//! `predictedTimes.length`):
 //! - `poses` `[robots · 3]`: `x, y, θ` now (m, m, rad in `(−π, π]`);
 //! - `status` `[robots · 6]`: `v, ω, Π ς_i, ς_c, vo_x, vo_y` now (m/s, rad/s, obstacle keep,
 //!   robot keep; the virtual obstacle, NaN when there is none);
@@ -29,6 +31,7 @@
 use super::convert::{js_error, scenario_from_js, to_js, whole};
 use crate::error::Error;
 use crate::obstacle::Obstacle;
+use crate::playground::edits::ParamValue;
 use crate::playground::{self as live, Live};
 use crate::presets;
 use crate::scenario::RobotSpec;
@@ -64,21 +67,18 @@ impl Buffer {
 #[serde(rename_all = "camelCase")]
 #[allow(missing_docs)]
 pub struct Layout {
-    pub robots: usize,
     pub poses: Buffer,
     pub status: Buffer,
     pub trails: Buffer,
     pub trail_lengths: Buffer,
     pub trail_times: Buffer,
     pub trail_min_pair: Buffer,
-    pub trail_capacity: usize,
     pub trail_head: usize,
     pub trail_recorded: usize,
     pub history_length: usize,
     pub predicted: Buffer,
     pub predicted_times: Buffer,
     pub predicted_min_pair: Buffer,
-    pub predicted_samples: usize,
     pub field: Buffer,
 }
 
@@ -199,23 +199,12 @@ impl Playground {
     #[wasm_bindgen(js_name = setParam)]
     pub fn set_param(&mut self, name: &str, value: JsValue) -> Result<(), JsError> {
         let value = if value.is_null() || value.is_undefined() {
-            serde_json::Value::Null
+            ParamValue::None
         } else if let Some(v) = value.as_f64() {
-            serde_json::Number::from_f64(v)
-                .map(serde_json::Value::Number)
-                .ok_or_else(|| {
-                    js_error(Error::Parse {
-                        field: name.into(),
-                        message: format!("must be a finite number, not {v}"),
-                    })
-                })?
-        } else if let Some(s) = value.as_string() {
-            serde_json::Value::String(s)
+            ParamValue::Number(v)
         } else {
-            return Err(js_error(Error::Parse {
-                field: name.into(),
-                message: "expected a number, null or a string".into(),
-            }));
+            // Text for the avoidance mode; anything else is refused as "of the wrong kind".
+            ParamValue::Text(value.as_string().unwrap_or_default())
         };
         self.live.set_param(name, value).map_err(js_error)
     }
@@ -339,9 +328,9 @@ impl Playground {
     }
 
     /// Every buffer's pointer, length and stride, and the counts that index them (see the
-    /// module doc): `{robots, poses, status, trails, trailLengths, trailTimes, trailMinPair,
-    /// trailCapacity, trailHead, trailRecorded, historyLength, predicted, predictedTimes,
-    /// predictedMinPair, predictedSamples, field}`, each buffer `{pointer, length, stride}`.
+    /// module doc): `{poses, status, trails, trailLengths, trailTimes, trailMinPair, trailHead,
+    /// trailRecorded, historyLength, predicted, predictedTimes, predictedMinPair, field}`, each
+    /// buffer `{pointer, length, stride}`.
     ///
     /// # Errors
     /// Only if the JS engine refuses to build the object.
@@ -418,21 +407,18 @@ impl Playground {
         let l = &self.live;
         let (t, p) = (l.trails(), l.prediction());
         Layout {
-            robots: l.scenario().robots.len(),
             poses: Buffer::of(l.poses(), live::POSE_STRIDE),
             status: Buffer::of(l.status(), live::STATUS_STRIDE),
             trails: Buffer::of(t.poses(), live::POSE_STRIDE),
             trail_lengths: Buffer::of(t.lens(), 1),
             trail_times: Buffer::of(t.times(), 1),
             trail_min_pair: Buffer::of(t.min_pair(), 1),
-            trail_capacity: t.capacity(),
             trail_head: t.head(),
             trail_recorded: t.recorded(),
             history_length: t.history_len(),
             predicted: Buffer::of(p.poses(), live::POSE_STRIDE),
             predicted_times: Buffer::of(p.times(), 1),
             predicted_min_pair: Buffer::of(p.min_pair(), 1),
-            predicted_samples: p.samples(),
             field: Buffer::of(l.field(), live::FIELD_STRIDE),
         }
     }

@@ -108,14 +108,14 @@ export class LiveViews {
     const pg = this.pg;
     const layout = pg.layout();
     this.layout = layout;
-    this.robots = layout.robots;
+    this.robots = layout.poses.length / layout.poses.stride;
     this.time = pg.time;
     this.duration = pg.duration;
     this.trailHead = layout.trailHead;
     this.historyLength = layout.historyLength;
     this.recorded = layout.trailRecorded;
-    this.trailCapacity = layout.trailCapacity;
-    this.predictedSamples = layout.predictedSamples;
+    this.trailCapacity = layout.trailTimes.length;
+    this.predictedSamples = layout.predictedTimes.length;
   }
 
   /** `[robots · 3]`: x, y, θ now. */
