@@ -289,7 +289,7 @@ export function predictions(page, preset, runs, warmup) {
       t0 = performance.now();
       for (let k = 0; k < runs; k++) pg.moveRobot(0, -60 + (k % 5) * 0.3, -40, 0);
       const edit = (performance.now() - t0) / runs;
-      const samples = pg.layout().predictedSamples;
+      const samples = pg.layout().predictedTimes.length;
       const end = times()[samples - 1];
       const s = pg.scenario();
       s.params.tol_position = 1e-12;
