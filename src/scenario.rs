@@ -7,7 +7,7 @@
 //!   "obstacles": [ { "center": [x, y], "radius": r_o, "influence": R_o } ] }
 //! ```
 //!
-//! Everything but `robots` is optional; unknown keys are an error. [`Scenario::from_json`]
+//! Everything but `robots` is optional; unknown keys and keys given twice are errors. [`Scenario::from_json`]
 //! parses and validates, and every error names the offending field.
 //!
 //! Over 500 lines: the format and its validation are one contract, each message beside the field
@@ -524,6 +524,21 @@ mod tests {
         assert!(
             err(r#"{"robots":[{"start":[0,0,0],"goal":[1,2,3]}],"dt":"x"}"#).starts_with("dt:")
         );
+        // A type error names its field, not a position in the text; a syntax error says where.
+        let typed = err(r#"{"robots":[{"start":[0,0,"a"],"goal":[1,2,3]}]}"#);
+        assert!(
+            typed.starts_with("robots[0].start[2]: invalid type"),
+            "{typed}"
+        );
+        assert!(!typed.contains("at line"), "{typed}");
+        let syntax = err(r#"{"robots":[{"start":[0,0,0],"goal":[1,2,3]}]"#);
+        assert!(
+            syntax.contains("not valid JSON: EOF") && syntax.contains("at line 1"),
+            "{syntax}"
+        );
+        // A key given twice is refused rather than the last one silently winning.
+        let twice = err(r#"{"robots":[{"start":[0,0,0],"goal":[1,2,3]}],"dt":0.01,"dt":0.02}"#);
+        assert!(twice.contains("duplicate field `dt`"), "{twice}");
     }
 
     #[test]
