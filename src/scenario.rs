@@ -7,8 +7,8 @@
 //!   "obstacles": [ { "center": [x, y], "radius": r_o, "influence": R_o } ] }
 //! ```
 //!
-//! Everything but `robots` is optional; unknown keys and keys given twice are errors. [`Scenario::from_json`]
-//! parses and validates, and every error names the offending field.
+//! Everything but `robots` is optional; unknown keys and keys given twice are errors.
+//! [`Scenario::from_json`] parses and validates, and every error names the offending field.
 //!
 //! Over 500 lines: the format and its validation are one contract, each message beside the field
 //! it checks, the whole-scenario check beside the per-robot and per-obstacle ones that edits use.
