@@ -105,7 +105,11 @@ impl Live {
             let now = self.sim.robots()[index].pose;
             self.trails.rewrite_newest(index, now, min_pair);
         }
-        self.settle(placed, None)
+        let settled = self.settle(placed, None);
+        if settled.is_err() {
+            self.scenario.robots[index] = old;
+        }
+        settled
     }
 
     /// Moves obstacle `index`'s centre to `center`.
@@ -161,7 +165,11 @@ impl Live {
             return Err(e);
         }
         let placed = self.sim.place_obstacle(index, o);
-        self.settle(placed, None)
+        let settled = self.settle(placed, None);
+        if settled.is_err() {
+            self.scenario.obstacles[index] = old;
+        }
+        settled
     }
 
     /// Ends an edit of `self.scenario`: when the simulation took it in place (`placed`), the
