@@ -3,11 +3,12 @@
 // model in place), in Node on the RELEASE wasm package. Paused at t = 0 (editing the starts) and
 // paused at t > 0 (editing where the robots are now). Prints one JSON line per case with the
 // median and the 90th percentile; `--budget MS` makes it exit 1 when a median exceeds MS (make
-// bench-wasm passes 5). Not part of `make test`: a time is not behaviour.
+// bench-wasm passes 5). Not part of `make test`: a time is not behaviour. The figures are also
+// written to test-results/bench-drag.json.
 //
 //   make build-wasm && node benches/drag.mjs [--robots 10000] [--moves 200] [--budget 5]
 
-import { readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { fileURLToPath } from 'node:url';
 import init, { Playground } from '../www/pkg/dvf.js';
@@ -38,6 +39,7 @@ function quantile(values, q) {
 }
 
 let failed = false;
+const lines = [];
 for (const ahead of [0, 50]) {
   const pg = Playground.fromPreset(`crowd-${robots}`);
   if (ahead > 0) pg.step(ahead);
@@ -79,8 +81,13 @@ for (const ahead of [0, 50]) {
   };
   if (Number.isFinite(budget)) line.budget_ms = budget;
   console.log(JSON.stringify(line));
+  lines.push(line);
   if (median > budget) failed = true;
   pg.free();
 }
 
+// The figures, recorded beside the other benchmarks' (an ignored folder).
+const results = fileURLToPath(new URL('../test-results/', import.meta.url));
+mkdirSync(results, { recursive: true });
+writeFileSync(`${results}bench-drag.json`, `${JSON.stringify(lines, null, 2)}\n`);
 process.exit(failed ? 1 : 0);
