@@ -4,7 +4,7 @@
 PORT ?= 8080
 export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
 
-.PHONY: serve build-wasm test lint lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser picture
+.PHONY: serve build-wasm test lint lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser bench-peer picture
 
 tools:
 	bash .ci/install
@@ -61,7 +61,7 @@ picture: build-wasm
 # one robot in the 10,000-robot crowd, and the browser's frames. `cargo bench --bench crowd` runs
 # the criterion benchmarks.
 BENCH_STEPS ?= 200
-bench: bench-native bench-wasm bench-browser
+bench: bench-native bench-wasm bench-browser bench-peer
 
 # Each figure is a JSON line, printed and appended to test-results/bench-steps.jsonl.
 bench-native: build-wasm
@@ -77,3 +77,8 @@ bench-wasm: build-wasm
 
 bench-browser: build-wasm
 	node tests/e2e/bench-browser.mjs
+
+# DVF against ORCA (dodgy_2d) on the crowd of 1,000, alternating in one process: open space,
+# the jam, the whole run (README, Performance); figures in test-results/bench-peer.jsonl.
+bench-peer:
+	cargo bench --bench peer

@@ -1,0 +1,245 @@
+//! DVF against a peer on the same crowd: ORCA as the crate `dodgy_2d` implements it (a port of
+//! RVO2), both given the neighbours within the same radius from the same grid
+//! (`dvf::grid::Neighbours`), stepped with the same `dt`, timed alternating in one process so
+//! that both see the same machine load.
+//!
+//! For each crowd size: milliseconds per step in open space (the first 2 s), in the jam at the
+//! centre (a window of steps around the time the crowd meets there), and over the whole run to
+//! the last arrival (total compute and simulated makespan). Prints one JSON line per figure
+//! with the ratio ORCA / DVF, appends them to `test-results/bench-peer.jsonl`, and checks
+//! nothing: a time is not behaviour. Not part of `make test`.
+//!
+//!   cargo bench --bench peer                 # 1,000 robots: every phase
+//!   cargo bench --bench peer -- 10000 open   # 10,000 robots, open space only
+//!
+//! ORCA's agents are holonomic discs of radius `r_ij` with the crowd's speed limit, preferring
+//! the velocity straight to their goal (slowing to land on it); an agent has arrived within
+//! `tol_position` of its goal. DVF's robots are unicycles that must also reach the goal
+//! heading; a robot has arrived when its report says it has converged. The two finish
+//! different tasks, so the makespans are quoted side by side, not as a ratio of merit.
+
+use dodgy_2d::{Agent, AvoidanceOptions, Vec2};
+use dvf::grid::Neighbours;
+use dvf::presets::crowd;
+use dvf::{Scenario, Simulation};
+use glam::DVec2;
+use std::borrow::Cow;
+use std::io::Write;
+use std::time::Instant;
+
+/// ORCA's time horizon for other agents (s): RVO2's examples use a few seconds.
+const TIME_HORIZON: f32 = 3.0;
+/// Open space: the first this many seconds.
+const OPEN_S: f64 = 2.0;
+/// Steps timed in the jam (around the middle of the crossing).
+const JAM_STEPS: usize = 200;
+
+/// ORCA on the crowd of a scenario.
+struct Orca {
+    agents: Vec<Cow<'static, Agent>>,
+    goals: Vec<Vec2>,
+    max_speed: f32,
+    dt: f32,
+    reach: f64,
+    tol: f32,
+    near: Neighbours,
+    positions: Vec<DVec2>,
+    velocities: Vec<Vec2>,
+    neighbours: Vec<Cow<'static, Agent>>,
+}
+
+impl Orca {
+    fn new(s: &Scenario) -> Self {
+        let agents = s
+            .robots
+            .iter()
+            .map(|r| {
+                let p = r.start_pose().p;
+                Cow::Owned(Agent {
+                    position: Vec2::new(p.x as f32, p.y as f32),
+                    velocity: Vec2::ZERO,
+                    radius: s.params.safe_radius as f32,
+                    avoidance_responsibility: 1.0,
+                })
+            })
+            .collect();
+        let goals = s
+            .robots
+            .iter()
+            .map(|r| {
+                let g = r.goal_pose().p;
+                Vec2::new(g.x as f32, g.y as f32)
+            })
+            .collect();
+        Self {
+            agents,
+            goals,
+            max_speed: s.params.v_max.unwrap_or(f64::INFINITY) as f32,
+            dt: s.dt as f32,
+            reach: s.params.sense_radius,
+            tol: s.params.tol_position as f32,
+            near: Neighbours::new(),
+            positions: Vec::new(),
+            velocities: Vec::new(),
+            neighbours: Vec::new(),
+        }
+    }
+
+    fn step(&mut self) {
+        self.positions.clear();
+        self.positions.extend(
+            self.agents
+                .iter()
+                .map(|a| DVec2::new(f64::from(a.position.x), f64::from(a.position.y))),
+        );
+        self.near.build(&self.positions, self.reach);
+        let options = AvoidanceOptions {
+            obstacle_margin: 0.0,
+            time_horizon: TIME_HORIZON,
+            obstacle_time_horizon: TIME_HORIZON,
+        };
+        self.velocities.clear();
+        for i in 0..self.agents.len() {
+            self.neighbours.clear();
+            self.neighbours.extend(
+                self.near
+                    .of(i)
+                    .iter()
+                    .map(|&j| self.agents[j as usize].clone()),
+            );
+            let a = &self.agents[i];
+            let to_goal = self.goals[i] - a.position;
+            let preferred =
+                to_goal.clamp_length_max(self.max_speed.min(to_goal.length() / self.dt));
+            self.velocities.push(a.compute_avoiding_velocity(
+                &self.neighbours,
+                &[],
+                preferred,
+                self.max_speed,
+                self.dt,
+                &options,
+            ));
+        }
+        for (a, v) in self
+            .agents
+            .iter_mut()
+            .map(Cow::to_mut)
+            .zip(&self.velocities)
+        {
+            a.velocity = *v;
+            a.position += *v * self.dt;
+        }
+    }
+
+    fn all_arrived(&self) -> bool {
+        self.agents
+            .iter()
+            .zip(&self.goals)
+            .all(|(a, g)| a.position.distance(*g) <= self.tol)
+    }
+}
+
+/// Milliseconds per step of `step` over `steps` steps.
+fn time(steps: usize, mut step: impl FnMut()) -> f64 {
+    let t0 = Instant::now();
+    for _ in 0..steps {
+        step();
+    }
+    t0.elapsed().as_secs_f64() * 1e3 / steps.max(1) as f64
+}
+
+fn all_converged(sim: &Simulation) -> bool {
+    let p = sim.params();
+    sim.robots()
+        .iter()
+        .all(|r| r.position_error() <= p.tol_position && r.heading_error_abs() <= p.tol_heading)
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with('-'))
+        .collect();
+    let n: usize = args.first().and_then(|a| a.parse().ok()).unwrap_or(1_000);
+    let only_open = args.iter().any(|a| a == "open");
+    let s = crowd(n);
+    let steps_of = |seconds: f64| (seconds / s.dt).round() as usize;
+    let mut lines = Vec::new();
+    let mut report = |phase: &str, dvf: f64, orca: f64, extra: String| {
+        let line = format!(
+            r#"{{"robots": {n}, "phase": "{phase}", "dvf_ms_per_step": {dvf:.4}, "orca_ms_per_step": {orca:.4}, "orca_over_dvf": {:.3}{extra}}}"#,
+            orca / dvf
+        );
+        println!("{line}");
+        lines.push(line);
+    };
+
+    // Open space, alternating three times.
+    let open = steps_of(OPEN_S);
+    for _ in 0..3 {
+        let mut sim = Simulation::new(&s);
+        let dvf = time(open, || sim.step());
+        let mut orca = Orca::new(&s);
+        let peer = time(open, || orca.step());
+        report("open", dvf, peer, String::new());
+    }
+    if !only_open {
+        // The jam: each planner's own crowd, run to the middle of the crossing (the circle's
+        // radius at the speed limit), then timed over JAM_STEPS steps.
+        let radius = s.robots[0].start_pose().p.length();
+        let meet = steps_of(radius / s.params.v_max.unwrap_or(1.0)) + steps_of(10.0);
+        let mut sim = Simulation::new(&s);
+        let mut orca = Orca::new(&s);
+        for _ in 0..meet {
+            sim.step();
+            orca.step();
+        }
+        for _ in 0..3 {
+            let dvf = time(JAM_STEPS, || sim.step());
+            let peer = time(JAM_STEPS, || orca.step());
+            report("jam", dvf, peer, format!(r#", "t": {:.1}"#, sim.time()));
+        }
+        // The whole run to the last arrival (or the scenario's end).
+        let total = s.steps();
+        let mut sim = Simulation::new(&s);
+        let t0 = Instant::now();
+        let mut dvf_steps = 0;
+        while dvf_steps < total && !all_converged(&sim) {
+            sim.step();
+            dvf_steps += 1;
+        }
+        let dvf_ms = t0.elapsed().as_secs_f64() * 1e3;
+        let mut orca = Orca::new(&s);
+        let t0 = Instant::now();
+        let mut orca_steps = 0;
+        while orca_steps < total && !orca.all_arrived() {
+            orca.step();
+            orca_steps += 1;
+        }
+        let orca_ms = t0.elapsed().as_secs_f64() * 1e3;
+        report(
+            "whole run",
+            dvf_ms / dvf_steps.max(1) as f64,
+            orca_ms / orca_steps.max(1) as f64,
+            format!(
+                r#", "dvf_total_s": {:.2}, "orca_total_s": {:.2}, "dvf_makespan_s": {:.2}, "orca_makespan_s": {:.2}, "dvf_all_arrived": {}, "orca_all_arrived": {}"#,
+                dvf_ms / 1e3,
+                orca_ms / 1e3,
+                dvf_steps as f64 * s.dt,
+                orca_steps as f64 * s.dt,
+                all_converged(&sim),
+                orca.all_arrived()
+            ),
+        );
+    }
+    let _ = std::fs::create_dir_all("test-results");
+    if let Ok(mut f) = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open("test-results/bench-peer.jsonl")
+    {
+        for l in &lines {
+            let _ = writeln!(f, "{l}");
+        }
+    }
+}
