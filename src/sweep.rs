@@ -6,17 +6,26 @@
 //! obstacle's influence ring, headings are uniform. Obstacles may overlap each other. Scenario
 //! `k` of a sweep from seed `s` depends only on `s + k`, so a failure is reproduced from its
 //! seed alone (`dvf sweep --seed S+k --count 1 --write DIR`).
+//!
+//! A sweep can be split across processes or machines: each shard writes one [`Outcome`] per
+//! scenario (a JSON line), and [`Summary::of`] summarises any set of outcomes that covers the
+//! seeds once, in the same arithmetic as an unsharded [`sweep`], so N shards merge to exactly
+//! the summary of one run.
 
 use crate::obstacle::Obstacle;
+use crate::params::Avoidance;
 use crate::params::Params;
 use crate::scenario::{RobotSpec, Scenario};
 use crate::sim::{self, Report};
 use glam::DVec2;
 use rand::{Rng, SeedableRng};
 use rand_pcg::Pcg64;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 use std::ops::RangeInclusive;
+
+/// The step of every random scenario (s).
+pub const DT: f64 = 0.01;
 
 /// Give up placing a pose after this many rejected draws (the area is too crowded).
 const MAX_DRAWS: usize = 100_000;
@@ -106,7 +115,7 @@ pub fn random_scenario(recipe: &Recipe, seed: u64) -> Option<Scenario> {
         name: format!("random scenario, seed {seed}"),
         bounds: None,
         duration: recipe.duration,
-        dt: 0.01,
+        dt: DT,
         params: recipe.params,
         independent: false,
         robots,
@@ -182,6 +191,79 @@ impl Quantiles {
     }
 }
 
+/// What a shard records of a recipe, so that outcomes of different recipes are not merged:
+/// the ranges and the settings the command line can change.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RecipeKey {
+    /// Robots per scenario, `[min, max]`.
+    pub robots: [usize; 2],
+    /// Obstacles per scenario, `[min, max]`.
+    pub obstacles: [usize; 2],
+    /// Robot avoidance.
+    pub avoidance: Avoidance,
+    /// The barrier's rate (`None`: no barrier).
+    pub barrier_rate: Option<f64>,
+}
+
+impl RecipeKey {
+    /// The key of `recipe`.
+    #[must_use]
+    pub fn of(recipe: &Recipe) -> Self {
+        Self {
+            robots: [*recipe.robots.start(), *recipe.robots.end()],
+            obstacles: [*recipe.obstacles.start(), *recipe.obstacles.end()],
+            avoidance: recipe.params.avoidance,
+            barrier_rate: recipe.params.barrier_rate,
+        }
+    }
+}
+
+/// One scenario of a sweep: its seed, its recipe and what happened (one JSON line of a shard).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Outcome {
+    /// The scenario's seed.
+    pub seed: u64,
+    /// The recipe it was drawn from.
+    pub recipe: RecipeKey,
+    /// Its poses could not be placed: not run.
+    pub skipped: bool,
+    /// Robots.
+    pub robots: usize,
+    /// The step after which each converged robot stayed converged (its time is `k · DT`), in
+    /// robot order: steps rather than seconds, so that the line reads back to the same bits.
+    pub converged_steps: Vec<u64>,
+    /// Violation events.
+    pub violations: usize,
+}
+
+impl Outcome {
+    /// Runs scenario `seed` of `recipe`; `on_report` sees the run.
+    pub fn run(recipe: &Recipe, seed: u64, on_report: impl FnOnce(&Scenario, &Report)) -> Self {
+        let mut outcome = Self {
+            seed,
+            recipe: RecipeKey::of(recipe),
+            skipped: true,
+            robots: 0,
+            converged_steps: Vec::new(),
+            violations: 0,
+        };
+        if let Some(scenario) = random_scenario(recipe, seed) {
+            let report = sim::run(&scenario);
+            outcome.skipped = false;
+            outcome.robots = report.robots.len();
+            outcome.converged_steps = report
+                .robots
+                .iter()
+                .filter_map(|r| r.converged_at)
+                .map(|t| (t / DT).round() as u64)
+                .collect();
+            outcome.violations = report.violations;
+            on_report(&scenario, &report);
+        }
+        outcome
+    }
+}
+
 /// Runs scenarios `seed, seed + 1, …` (`count` of them) and summarises them. `on_report`
 /// sees each run (for progress or for writing failures out).
 pub fn sweep(
@@ -190,52 +272,62 @@ pub fn sweep(
     count: usize,
     mut on_report: impl FnMut(u64, &Scenario, &Report),
 ) -> Summary {
-    let mut robots = 0;
-    let mut converged = 0;
-    let mut violations = 0;
-    let mut skipped = 0;
-    let mut times = Vec::new();
-    let mut failures = Vec::new();
-    for k in 0..count as u64 {
-        let s = seed.wrapping_add(k);
-        let Some(scenario) = random_scenario(recipe, s) else {
-            skipped += 1;
-            continue;
-        };
-        let report = sim::run(&scenario);
-        let done: Vec<f64> = report
-            .robots
-            .iter()
-            .filter_map(|r| r.converged_at)
-            .collect();
-        let unconverged = report.robots.len() - done.len();
-        robots += report.robots.len();
-        converged += done.len();
-        violations += report.violations;
-        times.extend(done);
-        if unconverged > 0 || report.violations > 0 {
-            failures.push(Failure {
-                seed: s,
-                unconverged,
-                violations: report.violations,
-            });
+    let outcomes: Vec<Outcome> = (0..count as u64)
+        .map(|k| {
+            let s = seed.wrapping_add(k);
+            Outcome::run(recipe, s, |scenario, report| on_report(s, scenario, report))
+        })
+        .collect();
+    Summary::of(seed, &outcomes)
+}
+
+impl Summary {
+    /// The summary of `outcomes`, in seed order from `seed` (the first): what [`sweep`] prints
+    /// for the same scenarios, however they were split and in whatever order they arrive.
+    #[must_use]
+    pub fn of(seed: u64, outcomes: &[Outcome]) -> Self {
+        let mut outcomes: Vec<&Outcome> = outcomes.iter().collect();
+        outcomes.sort_by_key(|o| o.seed.wrapping_sub(seed));
+        let mut robots = 0;
+        let mut converged = 0;
+        let mut violations = 0;
+        let mut skipped = 0;
+        let mut times = Vec::new();
+        let mut failures = Vec::new();
+        for o in &outcomes {
+            if o.skipped {
+                skipped += 1;
+                continue;
+            }
+            let unconverged = o.robots - o.converged_steps.len();
+            robots += o.robots;
+            converged += o.converged_steps.len();
+            violations += o.violations;
+            times.extend(o.converged_steps.iter().map(|&k| k as f64 * DT));
+            if unconverged > 0 || o.violations > 0 {
+                failures.push(Failure {
+                    seed: o.seed,
+                    unconverged,
+                    violations: o.violations,
+                });
+            }
         }
-        on_report(s, &scenario, &report);
-    }
-    Summary {
-        seed,
-        scenarios: count - skipped,
-        robots,
-        converged,
-        success_rate: if robots == 0 {
-            1.0
-        } else {
-            converged as f64 / robots as f64
-        },
-        violations,
-        skipped,
-        convergence_time: Quantiles::of(times),
-        failures,
+        let count = outcomes.len();
+        Summary {
+            seed,
+            scenarios: count - skipped,
+            robots,
+            converged,
+            success_rate: if robots == 0 {
+                1.0
+            } else {
+                converged as f64 / robots as f64
+            },
+            violations,
+            skipped,
+            convergence_time: Quantiles::of(times),
+            failures,
+        }
     }
 }
 

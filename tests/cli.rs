@@ -844,3 +844,65 @@ fn bench_prints_one_line_of_timing() {
         assert!(err.starts_with(&bad[0][2..]), "{bad:?}: {err}");
     }
 }
+
+/// `dvf sweep --shard K/N` runs every N-th scenario and prints one line each; `dvf sweep
+/// merge` turns the N shards, in any order, into exactly the summary of the unsharded sweep,
+/// and refuses a missing shard, a shard given twice and shards of different recipes.
+#[test]
+fn sharded_sweeps_merge_to_the_unsharded_summary() {
+    let recipe = ["--seed", "11", "--count", "10", "--robots", "3..=6"];
+    let whole = dvf(&[&["sweep"][..], &recipe].concat());
+    assert!(whole.status.success(), "{}", stderr(&whole));
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("sweep-shards");
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut files = Vec::new();
+    for k in 1..=3 {
+        let shard = format!("{k}/3");
+        let o = dvf(&[&["sweep"][..], &recipe, &["--shard", &shard]].concat());
+        assert!(o.status.success(), "{}", stderr(&o));
+        let lines = stdout(&o);
+        // Scenarios k, k + 3, …: 4, 3 and 3 of the 10.
+        assert_eq!(lines.lines().count(), if k == 1 { 4 } else { 3 }, "{lines}");
+        let path = dir.join(format!("shard-{k}.jsonl"));
+        std::fs::write(&path, lines).unwrap();
+        files.push(path.display().to_string());
+    }
+    let merged = dvf(&["sweep", "merge", &files[2], &files[0], &files[1]]);
+    assert!(merged.status.success(), "{}", stderr(&merged));
+    assert_eq!(stdout(&merged), stdout(&whole));
+
+    let missing = dvf(&["sweep", "merge", &files[0], &files[1]]);
+    assert!(!missing.status.success());
+    assert!(
+        stderr(&missing).contains("is missing"),
+        "{}",
+        stderr(&missing)
+    );
+    let twice = dvf(&["sweep", "merge", &files[0], &files[0], &files[1], &files[2]]);
+    assert!(
+        stderr(&twice).contains("appears twice"),
+        "{}",
+        stderr(&twice)
+    );
+    let other = dvf(&[
+        "sweep", "--seed", "21", "--count", "1", "--robots", "3..=5", "--shard", "1/1",
+    ]);
+    let other_path = dir.join("other.jsonl");
+    std::fs::write(&other_path, stdout(&other)).unwrap();
+    let mixed = dvf(&[
+        "sweep",
+        "merge",
+        &files[0],
+        &other_path.display().to_string(),
+    ]);
+    assert!(
+        stderr(&mixed).contains("another recipe"),
+        "{}",
+        stderr(&mixed)
+    );
+    for bad in ["0/3", "4/3", "x"] {
+        let o = dvf(&["sweep", "--count", "2", "--shard", bad]);
+        assert!(!o.status.success());
+        assert!(stderr(&o).contains("K/N"), "{bad}: {}", stderr(&o));
+    }
+}

@@ -19,9 +19,20 @@ mod cli {
     use dvf::presets::{preset, PRESETS};
     use dvf::scenario::Scenario;
     use dvf::sim::{run_recorded, Neighbourhood, Simulation};
-    use dvf::sweep::{sweep, Recipe};
+    use dvf::sweep::{sweep, Outcome, Recipe, Summary};
     use std::io::Write;
     use std::path::PathBuf;
+
+    /// What `dvf sweep` can do besides running scenarios.
+    #[derive(Subcommand)]
+    enum SweepAction {
+        /// Combine the JSON lines of `dvf sweep --shard` runs (files, or standard input when
+        /// none is given) into the summary one unsharded sweep of the same scenarios prints.
+        Merge {
+            /// Files of JSON lines, in any order.
+            files: Vec<PathBuf>,
+        },
+    }
 
     /// Largest `--grid` accepted: 1000 × 1000 samples.
     const MAX_GRID: usize = 1000;
@@ -59,8 +70,17 @@ mod cli {
             grid: usize,
         },
         /// Run COUNT random scenarios from SEED and print the success rate, the violations and
-        /// the distribution of convergence times (JSON).
+        /// the distribution of convergence times (JSON). With `--shard K/N`, run only every
+        /// N-th scenario from the K-th and print one JSON line per scenario instead; `dvf sweep
+        /// merge` combines the shards' lines into the summary of the whole sweep.
+        #[command(args_conflicts_with_subcommands = true)]
         Sweep {
+            #[command(subcommand)]
+            action: Option<SweepAction>,
+            /// Run only scenarios K, K + N, K + 2N, … (counted from 1) of the COUNT and print
+            /// one JSON line per scenario (seed, recipe, outcome), for `dvf sweep merge`.
+            #[arg(long, value_name = "K/N", value_parser = parse_shard)]
+            shard: Option<(usize, usize)>,
             /// Scenario k uses seed SEED + k, so any failure is rerun with `--seed S --count 1`.
             #[arg(long, default_value_t = 0)]
             seed: u64,
@@ -150,6 +170,72 @@ mod cli {
     }
 
     /// A positive barrier rate, or `none`.
+    fn parse_shard(text: &str) -> Result<(usize, usize), String> {
+        let parsed = text
+            .split_once('/')
+            .and_then(|(k, n)| Some((k.trim().parse().ok()?, n.trim().parse().ok()?)));
+        match parsed {
+            Some((k, n)) if n >= 1 && (1..=n).contains(&k) => Ok((k, n)),
+            _ => Err(format!(
+                "expected K/N with 1 ≤ K ≤ N (shard K of N), not {text:?}"
+            )),
+        }
+    }
+
+    /// The summary of the outcomes in `files` (standard input when there are none), checked to
+    /// cover one recipe's seeds from the smallest, each once.
+    fn merge(files: &[PathBuf]) -> Result<Summary, String> {
+        let mut texts = Vec::new();
+        if files.is_empty() {
+            let mut text = String::new();
+            std::io::Read::read_to_string(&mut std::io::stdin(), &mut text)
+                .map_err(|e| format!("standard input: {e}"))?;
+            texts.push(("standard input".to_owned(), text));
+        }
+        for f in files {
+            let text = std::fs::read_to_string(f)
+                .map_err(|e| format!("{}: cannot read: {e}", f.display()))?;
+            texts.push((f.display().to_string(), text));
+        }
+        let mut outcomes: Vec<Outcome> = Vec::new();
+        for (name, text) in &texts {
+            for (k, line) in text.lines().enumerate() {
+                if line.trim().is_empty() {
+                    continue;
+                }
+                let o: Outcome = serde_json::from_str(line).map_err(|e| {
+                    format!("{name}:{}: not a line of dvf sweep --shard: {e}", k + 1)
+                })?;
+                if let Some(first) = outcomes.first() {
+                    if first.recipe != o.recipe {
+                        return Err(format!(
+                            "{name}:{}: seed {} was drawn from another recipe than seed {} (shards of different sweeps)",
+                            k + 1,
+                            o.seed,
+                            first.seed
+                        ));
+                    }
+                }
+                outcomes.push(o);
+            }
+        }
+        outcomes.sort_by_key(|o| o.seed);
+        let Some(first) = outcomes.first().map(|o| o.seed) else {
+            return Err("no outcomes to merge".into());
+        };
+        for (k, o) in outcomes.iter().enumerate() {
+            let want = first.wrapping_add(k as u64);
+            if o.seed != want {
+                return Err(if o.seed < want {
+                    format!("seed {} appears twice (a shard merged twice?)", o.seed)
+                } else {
+                    format!("seed {want} is missing (a shard not finished or not given?)")
+                });
+            }
+        }
+        Ok(Summary::of(first, &outcomes))
+    }
+
     fn parse_rate(text: &str) -> Result<Option<f64>, String> {
         if text == "none" {
             return Ok(None);
@@ -232,6 +318,16 @@ mod cli {
                 }
             }
             Command::Sweep {
+                action: Some(SweepAction::Merge { files }),
+                ..
+            } => {
+                let summary = merge(&files)?;
+                let json = serde_json::to_string(&summary).map_err(|e| e.to_string())?;
+                writeln!(out, "{json}").map_err(|e| e.to_string())?;
+            }
+            Command::Sweep {
+                action: None,
+                shard,
                 seed,
                 count,
                 robots,
@@ -278,7 +374,7 @@ mod cli {
                         .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
                 }
                 let mut write_error = None;
-                let summary = sweep(&recipe, seed, count, |s, scenario, report| {
+                let mut write_failure = |s: u64, scenario: &Scenario, report: &dvf::Report| {
                     let failed = report.violations > 0
                         || report.robots.iter().any(|r| r.converged_at.is_none());
                     if let (true, Some(dir)) = (failed, &write) {
@@ -287,12 +383,26 @@ mod cli {
                             write_error = Some(format!("{}: cannot write: {e}", path.display()));
                         }
                     }
-                });
+                };
+                if let Some((k, n)) = shard {
+                    // Every N-th scenario from the K-th, one line each as it finishes: a shard
+                    // cut short leaves whole lines, and merge names the missing seeds.
+                    for index in (k - 1..count).step_by(n) {
+                        let s = seed.wrapping_add(index as u64);
+                        let outcome = Outcome::run(&recipe, s, |scenario, report| {
+                            write_failure(s, scenario, report);
+                        });
+                        let json = serde_json::to_string(&outcome).map_err(|e| e.to_string())?;
+                        writeln!(out, "{json}").map_err(|e| e.to_string())?;
+                    }
+                } else {
+                    let summary = sweep(&recipe, seed, count, &mut write_failure);
+                    let json = serde_json::to_string(&summary).map_err(|e| e.to_string())?;
+                    writeln!(out, "{json}").map_err(|e| e.to_string())?;
+                }
                 if let Some(e) = write_error {
                     return Err(e);
                 }
-                let json = serde_json::to_string(&summary).map_err(|e| e.to_string())?;
-                writeln!(out, "{json}").map_err(|e| e.to_string())?;
             }
             Command::Bench {
                 robots,
