@@ -265,19 +265,26 @@ impl Outcome {
 }
 
 /// Runs scenarios `seed, seed + 1, …` (`count` of them) and summarises them. `on_report`
-/// sees each run (for progress or for writing failures out).
+/// sees each run (for writing failures out). Natively the scenarios run on every core
+/// (rayon); the summary is the same bits with any number of threads, since [`Summary::of`]
+/// takes the outcomes in seed order.
 pub fn sweep(
     recipe: &Recipe,
     seed: u64,
     count: usize,
-    mut on_report: impl FnMut(u64, &Scenario, &Report),
+    on_report: impl Fn(u64, &Scenario, &Report) + Sync,
 ) -> Summary {
-    let outcomes: Vec<Outcome> = (0..count as u64)
-        .map(|k| {
-            let s = seed.wrapping_add(k);
-            Outcome::run(recipe, s, |scenario, report| on_report(s, scenario, report))
-        })
-        .collect();
+    let run = |k: u64| {
+        let s = seed.wrapping_add(k);
+        Outcome::run(recipe, s, |scenario, report| on_report(s, scenario, report))
+    };
+    #[cfg(not(target_arch = "wasm32"))]
+    let outcomes: Vec<Outcome> = {
+        use rayon::prelude::*;
+        (0..count as u64).into_par_iter().map(run).collect()
+    };
+    #[cfg(target_arch = "wasm32")]
+    let outcomes: Vec<Outcome> = (0..count as u64).map(run).collect();
     Summary::of(seed, &outcomes)
 }
 

@@ -906,3 +906,18 @@ fn sharded_sweeps_merge_to_the_unsharded_summary() {
         assert!(stderr(&o).contains("K/N"), "{bad}: {}", stderr(&o));
     }
 }
+
+/// The sweep runs its scenarios on every core; one thread or several print the same bytes.
+#[test]
+fn a_sweep_is_the_same_on_one_thread_and_on_many() {
+    let run = |threads: &str| {
+        let o = Command::new(env!("CARGO_BIN_EXE_dvf"))
+            .args(["sweep", "--seed", "3", "--count", "12", "--robots", "3..=8"])
+            .env("RAYON_NUM_THREADS", threads)
+            .output()
+            .expect("the dvf binary runs");
+        assert!(o.status.success(), "{}", stderr(&o));
+        stdout(&o)
+    };
+    assert_eq!(run("1"), run("4"));
+}

@@ -373,14 +373,16 @@ mod cli {
                     std::fs::create_dir_all(dir)
                         .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
                 }
-                let mut write_error = None;
-                let mut write_failure = |s: u64, scenario: &Scenario, report: &dvf::Report| {
+                // Scenarios run on every core: the first write error is kept for the end.
+                let write_error = std::sync::Mutex::new(None);
+                let write_failure = |s: u64, scenario: &Scenario, report: &dvf::Report| {
                     let failed = report.violations > 0
                         || report.robots.iter().any(|r| r.converged_at.is_none());
                     if let (true, Some(dir)) = (failed, &write) {
                         let path = dir.join(format!("seed-{s}.json"));
                         if let Err(e) = std::fs::write(&path, scenario.to_json()) {
-                            write_error = Some(format!("{}: cannot write: {e}", path.display()));
+                            let mut first = write_error.lock().unwrap_or_else(|p| p.into_inner());
+                            first.get_or_insert(format!("{}: cannot write: {e}", path.display()));
                         }
                     }
                 };
@@ -396,11 +398,11 @@ mod cli {
                         writeln!(out, "{json}").map_err(|e| e.to_string())?;
                     }
                 } else {
-                    let summary = sweep(&recipe, seed, count, &mut write_failure);
+                    let summary = sweep(&recipe, seed, count, write_failure);
                     let json = serde_json::to_string(&summary).map_err(|e| e.to_string())?;
                     writeln!(out, "{json}").map_err(|e| e.to_string())?;
                 }
-                if let Some(e) = write_error {
+                if let Some(e) = write_error.into_inner().unwrap_or_else(|p| p.into_inner()) {
                     return Err(e);
                 }
             }
