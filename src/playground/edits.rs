@@ -148,23 +148,19 @@ impl Live {
     fn set_obstacle(&mut self, index: usize, o: Obstacle) -> Result<(), Error> {
         let old = self.scenario.obstacles[index];
         self.scenario.obstacles[index] = o;
-        let mut valid = self.scenario.validate_obstacle(index);
-        // At t > 0 the robots must be clear of it where they are now; `resume` names the
-        // first that is not.
-        let clear = self
-            .sim
-            .robots()
-            .iter()
-            .all(|r| o.clearance(r.pose.p) > 0.0);
-        if valid.is_ok() && self.steps() > 0 && !clear {
-            let now: Vec<Pose> = self.sim.robots().iter().map(|r| r.pose).collect();
-            valid = self.resume(self.scenario.clone(), &now);
-        }
-        if let Err(e) = valid {
+        if let Err(e) = self.scenario.validate_obstacle(index) {
             self.scenario.obstacles[index] = old;
             return Err(e);
         }
-        let placed = self.sim.place_obstacle(index, o);
+        // At t > 0 the robots must also be clear of it where they are now: when one is not,
+        // the whole path of `settle` (`resume`) refuses the edit and names it.
+        let clear = self.steps() == 0
+            || self
+                .sim
+                .robots()
+                .iter()
+                .all(|r| o.clearance(r.pose.p) > 0.0);
+        let placed = clear && self.sim.place_obstacle(index, o);
         let settled = self.settle(placed, None);
         if settled.is_err() {
             self.scenario.obstacles[index] = old;
