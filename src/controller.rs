@@ -31,7 +31,7 @@
 use crate::field::goal_field_body;
 use crate::obstacle::{blend, goal_first, transition, Obstacle};
 use crate::params::{Avoidance, Params};
-use crate::se2::{heading, rotate, unrotate, Pose};
+use crate::se2::{heading, rotate, unrotate_by, Pose};
 use crate::swarm::{cluster, pair_range, tangent_field, Approach, Neighbour};
 use glam::DVec2;
 
@@ -145,17 +145,15 @@ where
     I::IntoIter: Clone,
 {
     let theta = pose.theta;
+    // The heading's sine and cosine, once for every rotation by θ below.
+    let h = heading(theta);
     let eps = params.transition_width;
     let goal_body = goal_field_body(err);
-    let goal_world = rotate(theta, goal_body);
+    let goal_world = h.rotate(goal_body);
 
     // Direction of motion under the goal field: the heading, reversed when the robot would
     // drive backwards (θ_r is measured against the motion, docs/notes-on-the-paper.md §4).
-    let motion = if goal_body.x < 0.0 {
-        -heading(theta)
-    } else {
-        heading(theta)
-    };
+    let motion = if goal_body.x < 0.0 { -h } else { h };
     let to_goal = err.p.length();
     let exits = (params.avoidance == Avoidance::Exit).then_some(to_goal);
     let (gp, keep_o) = blend(pose.p, motion, goal_world, obstacles, eps, exits);
@@ -188,12 +186,12 @@ where
         })
         .filter(|&(_, s, _)| s < 1.0);
 
-    let gp_body = unrotate(theta, gp);
+    let gp_body = unrotate_by(h, gp);
     let (field, v, delta, keep_c) = match avoiding {
         Some((o, keep_c, side)) => {
             let t = tangent_field(pose.p, theta, o, side);
             let field = keep_c * gp + (1.0 - keep_c) * t;
-            let fb = unrotate(theta, field);
+            let fb = unrotate_by(h, field);
             let v = params.k_v * keep_c * gp_body.x + (1.0 - keep_c) * params.avoid_speed;
             (field, v, fb.y.atan2(fb.x), keep_c)
         }

@@ -124,10 +124,42 @@ fn constraints<'a>(
     }
 }
 
+/// The distance beyond which a neighbour never changes what [`filter`] returns for a command
+/// of speed `|v| ≤ speed`: a neighbour farther than this may be left out of the barrier, with
+/// the same bits. Zero without a barrier (nothing binds). This is what bounds a step's cost in
+/// a dense crowd (README, Performance): a slow robot in a jam constrains itself against its
+/// immediate neighbours only.
+///
+/// Why: a neighbour at distance `d` along `u` bounds the speed along a direction `c`
+/// (`|c| ≤ 1`: a chord, `sinc ≤ 1`) by `½·a(d − d_s)/(|u·c|·dt) ≥ ½·α(d − d_s)` on one side
+/// (`a = α·dt`). The filter reads its limits twice: whether the speed `min(k_v|Γ|, v_c) ≤ v_c`
+/// along the field is cut (a bound at or above it cuts nothing), and the clamp of `v` (a bound
+/// beyond `|v|` on either side clamps nothing). Both are a minimum or a maximum over the
+/// neighbours, exact in floating point, so a neighbour whose bound is at least
+/// `max(|v|, v_c)` changes neither: `d ≥ d_s + 2·max(|v|, v_c)/α`, widened by a relative
+/// [`REACH_MARGIN`] for the round-off of the bounds (a few ulps).
+#[must_use]
+pub fn neighbour_reach(params: &Params, speed: f64) -> f64 {
+    let Some(rate) = params.barrier_rate else {
+        return 0.0;
+    };
+    let fastest = speed.abs().max(params.avoid_speed);
+    let reach = 2.0 * params.safe_radius * (1.0 + MARGIN) + 2.0 * fastest / rate;
+    reach * (1.0 + REACH_MARGIN) + REACH_MARGIN
+}
+
+/// The relative widening of [`neighbour_reach`] (and of the avoidance range where the
+/// simulation lists neighbours): far above the few ulps of round-off it covers, far below any
+/// distance that matters.
+pub const REACH_MARGIN: f64 = 1e-6;
+
 /// The command `c` of a robot at `pose` whose field is `field` (world frame), made safe: its
 /// speed clamped by the barrier (see [`speed_limits`]), with `a = barrier_rate·dt` and the
 /// safe distance `2·r_ij` of `params`. The barrier's constraints are derived once into
 /// `constraints` (a buffer reused from robot to robot) for the two directions it asks about. Without a barrier rate the command is returned as it is.
+///
+/// Returned with the chord of its step, `chord(pose.theta, ω, dt)`, which the barrier computes
+/// anyway and [`crate::unicycle::integrate_along`] takes: a step computes it once.
 ///
 /// A robot whose field leads into a barrier also turns left (counter-clockwise) by
 /// `k_a·h·π/2`, where `h ∈ [0, 1]` is the part of the speed `min(k_v|Γ|, v_c)` that the
@@ -149,9 +181,9 @@ pub fn filter<'a>(
     field: DVec2,
     neighbours: impl IntoIterator<Item = DVec2>,
     obstacles: impl IntoIterator<Item = &'a Obstacle>,
-) -> Command {
+) -> (Command, DVec2) {
     let Some(rate) = params.barrier_rate else {
-        return c;
+        return (c, chord(pose.theta, c.omega, dt));
     };
     let safe = 2.0 * params.safe_radius;
     constraints.derive(pose.p, rate * dt, safe, neighbours, obstacles);
@@ -191,6 +223,11 @@ impl Constraints {
         });
     }
 
+    /// Makes room for `n` constraints, so that deriving up to that many allocates nothing.
+    pub fn reserve(&mut self, n: usize) {
+        self.items.reserve(n.saturating_sub(self.items.len()));
+    }
+
     /// The speed limits of a step along `chord` (see [`speed_limits`]).
     #[must_use]
     pub fn limits(&self, chord: DVec2, dt: f64) -> SpeedLimits {
@@ -210,7 +247,7 @@ fn steer(
     c: Command,
     field: DVec2,
     limits: impl Fn(DVec2) -> SpeedLimits,
-) -> Command {
+) -> (Command, DVec2) {
     let wanted = (params.k_v * field.length()).min(params.avoid_speed);
     let held = match field.try_normalize() {
         Some(along) if wanted > 0.0 => (1.0 - limits(along).hi / wanted).max(0.0),
@@ -218,10 +255,9 @@ fn steer(
     };
     let turned = c.omega + params.k_a * held * FRAC_PI_2;
     let omega = params.omega_max.map_or(turned, |m| turned.clamp(-m, m));
-    Command {
-        v: limits(chord(pose.theta, omega, dt)).clamp(c.v),
-        omega,
-    }
+    let step = chord(pose.theta, omega, dt);
+    let v = limits(step).clamp(c.v);
+    (Command { v, omega }, step)
 }
 
 #[cfg(test)]
@@ -287,7 +323,7 @@ mod tests {
         let mut closest = f64::INFINITY;
         for _ in 0..200 {
             // Both commands from the same snapshot, as in the simulator.
-            let ci = filter(
+            let (ci, _) = filter(
                 &mut Constraints::new(),
                 &p,
                 dt,
@@ -297,7 +333,7 @@ mod tests {
                 [pj.p],
                 [],
             );
-            let cj = filter(
+            let (cj, _) = filter(
                 &mut Constraints::new(),
                 &p,
                 dt,
@@ -326,7 +362,7 @@ mod tests {
         let mut r = Pose::new(-5.0, 0.0, 0.0);
         let mut closest = f64::INFINITY;
         for _ in 0..200 {
-            let c = filter(
+            let (c, _) = filter(
                 &mut Constraints::new(),
                 &p,
                 dt,
@@ -380,7 +416,8 @@ mod tests {
                         DVec2::ZERO,
                         [pj.p],
                         [],
-                    ),
+                    )
+                    .0,
                     filter(
                         &mut Constraints::new(),
                         &p,
@@ -390,12 +427,70 @@ mod tests {
                         DVec2::ZERO,
                         [pi.p],
                         [],
-                    ),
+                    )
+                    .0,
                 );
                 pi = integrate(pi, fi, dt);
                 pj = integrate(pj, fj, dt);
                 assert!(pi.p.distance(pj.p) >= ds);
             }
         }
+    }
+
+    /// A neighbour beyond [`neighbour_reach`] of the command's speed changes nothing: random
+    /// robots, commands and fields among neighbours up to 30 m away (the default `α` = 5 1/s,
+    /// speeds up to 30 m/s so that the reach varies from 2.8 m to 14 m), filtered with every
+    /// neighbour and with those within the reach only, give the same bits, command and chord.
+    #[test]
+    fn neighbours_beyond_the_reach_change_nothing() {
+        let mut rng = XorShift(0x9E37_79B9_7F4A_7C15_u64);
+        let mut next = move || rng.unit() * 2.0 - 1.0;
+        let p = Params::default();
+        let dt = 0.01;
+        let (mut all, mut near) = (Constraints::new(), Constraints::new());
+        let mut left_out = 0;
+        for _ in 0..3000 {
+            let pose = Pose::new(0.0, 0.0, 4.0 * next());
+            let c = Command {
+                v: 30.0 * next(),
+                omega: 20.0 * next(),
+            };
+            let field = DVec2::new(next(), next()) * 3.0;
+            let neighbours: Vec<DVec2> = (0..8)
+                .map(|_| DVec2::new(next(), next()) * 30.0)
+                .filter(|q| q.length() > 2.0 * p.safe_radius)
+                .collect();
+            let reach = neighbour_reach(&p, c.v);
+            let within = || neighbours.iter().copied().filter(|q| q.length() <= reach);
+            left_out += neighbours.len() - within().count();
+            let a = filter(
+                &mut all,
+                &p,
+                dt,
+                pose,
+                c,
+                field,
+                neighbours.iter().copied(),
+                [],
+            );
+            let b = filter(&mut near, &p, dt, pose, c, field, within(), []);
+            assert_eq!(a.0.v.to_bits(), b.0.v.to_bits(), "{pose:?} {c:?}");
+            assert_eq!(a.0.omega.to_bits(), b.0.omega.to_bits(), "{pose:?} {c:?}");
+            assert_eq!(a.1, b.1);
+        }
+        assert!(
+            left_out > 5000,
+            "the reach left out only {left_out} neighbours"
+        );
+        assert_eq!(
+            neighbour_reach(
+                &Params {
+                    barrier_rate: None,
+                    ..p
+                },
+                10.0
+            ),
+            0.0
+        );
     }
 }

@@ -51,7 +51,15 @@ pub fn rotate(theta: f64, v: DVec2) -> DVec2 {
 #[inline]
 #[must_use]
 pub fn unrotate(theta: f64, v: DVec2) -> DVec2 {
-    let (s, c) = theta.sin_cos();
+    unrotate_by(heading(theta), v)
+}
+
+/// [`unrotate`] by the attitude whose [`heading`] is `h`: the same bits, for a caller that
+/// rotates by one attitude several times and takes its sine and cosine once.
+#[inline]
+#[must_use]
+pub fn unrotate_by(h: DVec2, v: DVec2) -> DVec2 {
+    let (c, s) = (h.x, h.y);
     DVec2::new(c * v.x + s * v.y, -s * v.x + c * v.y)
 }
 

@@ -33,8 +33,16 @@ pub fn chord(theta: f64, omega: f64, dt: f64) -> DVec2 {
 #[inline]
 #[must_use]
 pub fn integrate(pose: Pose, c: Command, dt: f64) -> Pose {
+    integrate_along(pose, c, dt, chord(pose.theta, c.omega, dt))
+}
+
+/// [`integrate`] with its chord `chord(pose.theta, c.omega, dt)` computed already (the safety
+/// barrier computes it to clamp the speed): the same bits.
+#[inline]
+#[must_use]
+pub fn integrate_along(pose: Pose, c: Command, dt: f64, chord: DVec2) -> Pose {
     Pose {
-        p: pose.p + c.v * dt * chord(pose.theta, c.omega, dt),
+        p: pose.p + c.v * dt * chord,
         theta: wrap_angle(pose.theta + c.omega * dt),
     }
 }

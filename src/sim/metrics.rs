@@ -36,11 +36,13 @@ pub(super) struct Observed<'a> {
     pub obstacles: &'a [Obstacle],
     pub obstacle_cells: &'a ObstacleCells,
     pub neighbourhood: Neighbourhood,
-    /// The robots within `reach` of each robot (built for this state when the neighbourhood
-    /// is [`Neighbourhood::Grid`]).
+    /// The robots within `list_reach` of each robot (built for this state when the
+    /// neighbourhood is [`Neighbourhood::Grid`]).
     pub near: &'a Neighbours,
-    /// `max(R_s, 2·r_ij)`.
+    /// `max(R_s, 2·r_ij)`: the obstacles counted by the clearance metric.
     pub reach: f64,
+    /// The reach of `near`'s lists (at least `2·r_ij`).
+    pub list_reach: f64,
 }
 
 impl Metrics {
@@ -124,16 +126,22 @@ impl Metrics {
             Neighbourhood::Grid => {
                 // Every pair closer than `2·r_ij` is in the lists (the reach is at least that),
                 // and so is the closest pair whenever some pair is within the reach.
+                // The lists may hold pairs a little beyond their reach (their skin): those are
+                // left out, so that the pairs seen are those within the reach, whenever the
+                // lists were built.
+                let reach2 = o.list_reach * o.list_reach;
                 for i in 0..n {
+                    let p = robots[i].pose.p;
                     for &j in o.near.of(i) {
-                        if j as usize > i {
-                            pair(i, j as usize, &mut min);
+                        let j = j as usize;
+                        if j > i && robots[j].pose.p.distance_squared(p) <= reach2 {
+                            pair(i, j, &mut min);
                         }
                     }
                 }
                 // No pair within the reach: the closest pair matters only while no closer one
                 // has been seen, which a swarm at bounded density leaves behind at once.
-                if min.is_none() && self.min_pair.map_or(true, |m| m > reach) {
+                if min.is_none() && self.min_pair.map_or(true, |m| m > o.list_reach) {
                     for i in 0..n {
                         for j in i + 1..n {
                             let d = robots[i].pose.p.distance(robots[j].pose.p);
