@@ -5,7 +5,8 @@
 //!
 //! For each crowd size: milliseconds per step in open space (the first 2 s), in the jam at the
 //! centre (a window of steps around the time the crowd meets there), and over the whole run to
-//! the last arrival (total compute and simulated makespan). Prints one JSON line per figure
+//! the last arrival (total compute and simulated makespan), each planner on one thread; then
+//! DVF's step on all of rayon's threads against one (`RAYON_NUM_THREADS` sets the count). Prints one JSON line per figure
 //! with the ratio ORCA / DVF, appends them to `test-results/bench-peer.jsonl`, and checks
 //! nothing: a time is not behaviour. Not part of `make test`.
 //!
@@ -174,10 +175,16 @@ fn main() {
         lines.push(line);
     };
 
+    // One thread each, as ORCA here runs (the threads have their own figure below).
+    let serial = |s: &Scenario| {
+        let mut sim = Simulation::new(s);
+        sim.set_parallel(false);
+        sim
+    };
     // Open space, alternating three times.
     let open = steps_of(OPEN_S);
     for _ in 0..3 {
-        let mut sim = Simulation::new(&s);
+        let mut sim = serial(&s);
         let dvf = time(open, || sim.step());
         let mut orca = Orca::new(&s);
         let peer = time(open, || orca.step());
@@ -188,7 +195,7 @@ fn main() {
         // radius at the speed limit), then timed over JAM_STEPS steps.
         let radius = s.robots[0].start_pose().p.length();
         let meet = steps_of(radius / s.params.v_max.unwrap_or(1.0)) + steps_of(10.0);
-        let mut sim = Simulation::new(&s);
+        let mut sim = serial(&s);
         let mut orca = Orca::new(&s);
         for _ in 0..meet {
             sim.step();
@@ -201,7 +208,7 @@ fn main() {
         }
         // The whole run to the last arrival (or the scenario's end).
         let total = s.steps();
-        let mut sim = Simulation::new(&s);
+        let mut sim = serial(&s);
         let t0 = Instant::now();
         let mut dvf_steps = 0;
         while dvf_steps < total && !all_converged(&sim) {
@@ -231,6 +238,20 @@ fn main() {
                 orca.all_arrived()
             ),
         );
+    }
+    // DVF on the threads of rayon's pool against one thread, in open space, alternating.
+    for _ in 0..3 {
+        let mut one = serial(&s);
+        let single = time(open, || one.step());
+        let mut many = Simulation::new(&s);
+        let parallel = time(open, || many.step());
+        let line = format!(
+            r#"{{"robots": {n}, "phase": "open, threads", "threads": {}, "dvf_ms_per_step_one_thread": {single:.4}, "dvf_ms_per_step": {parallel:.4}, "threads_over_one": {:.3}}}"#,
+            rayon::current_num_threads(),
+            parallel / single
+        );
+        println!("{line}");
+        lines.push(line);
     }
     let _ = std::fs::create_dir_all("test-results");
     if let Ok(mut f) = std::fs::OpenOptions::new()

@@ -144,3 +144,49 @@ fn obstacle_fields_give_the_same_bits() {
     });
     same_bits(&thin, usize::MAX);
 }
+
+/// A step of a large crowd evaluates its robots on rayon's threads (natively): the same bits
+/// on one thread as on two and as with the parallel step turned off, at every step, and the
+/// same report. 600 robots (above `PARALLEL_FROM`) among obstacles, through the first 4 s.
+#[cfg(not(target_arch = "wasm32"))]
+#[test]
+fn threads_give_the_same_bits() {
+    let s = crowd_with_obstacles(600, 12);
+    let pool = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+    };
+    let (one, two) = (pool(1), pool(2));
+    let mut a = Simulation::new(&s);
+    let mut b = Simulation::new(&s);
+    let mut c = Simulation::new(&s);
+    c.set_parallel(false);
+    for k in 1..=400 {
+        one.install(|| a.step());
+        two.install(|| b.step());
+        c.step();
+        for (i, ((x, y), z)) in a
+            .robots()
+            .iter()
+            .zip(b.robots())
+            .zip(c.robots())
+            .enumerate()
+        {
+            assert_eq!(
+                bits(x),
+                bits(y),
+                "robot {i} at step {k}: one thread, two threads"
+            );
+            assert_eq!(
+                bits(x),
+                bits(z),
+                "robot {i} at step {k}: one thread, serial"
+            );
+        }
+    }
+    let report = |sim: &Simulation| serde_json::to_string(&sim.report()).unwrap();
+    assert_eq!(report(&a), report(&b));
+    assert_eq!(report(&a), report(&c));
+}

@@ -113,13 +113,20 @@ pub struct Simulation {
     near: Neighbours,
     positions: Vec<DVec2>,
     lists_reach: f64,
-    constraints: safety::Constraints,
+    scratch: Scratch,
+    // The parallel step (native only): whether it is on, its buffers (one per chunk), and the
+    // evaluations before they are stored.
+    #[cfg(not(target_arch = "wasm32"))]
+    parallel: bool,
+    #[cfg(not(target_arch = "wasm32"))]
+    scratches: Vec<Scratch>,
+    #[cfg(not(target_arch = "wasm32"))]
+    evaluated: Vec<(Evaluation, DVec2)>,
     commands: Vec<Command>,
     // Each command's chord (see `safety::filter`), and each goal's heading (its sine and
     // cosine, for the error pose).
     chords: Vec<DVec2>,
     goal_headings: Vec<DVec2>,
-    neighbours: Vec<Neighbour>,
     speeds: Vec<f64>,
 }
 
@@ -156,11 +163,16 @@ impl Simulation {
             near: Neighbours::new(),
             positions: Vec::with_capacity(n),
             lists_reach: f64::NAN,
-            constraints: safety::Constraints::new(),
+            scratch: Scratch::default(),
+            #[cfg(not(target_arch = "wasm32"))]
+            parallel: true,
+            #[cfg(not(target_arch = "wasm32"))]
+            scratches: Vec::new(),
+            #[cfg(not(target_arch = "wasm32"))]
+            evaluated: Vec::new(),
             commands: vec![Command::default(); n],
             chords: vec![DVec2::ZERO; n],
             goal_headings,
-            neighbours: Vec::new(),
             speeds: vec![0.0; n],
         };
         sim.build_obstacle_cells();
@@ -226,9 +238,14 @@ impl Simulation {
             self.robots.len()
         };
         let most = (longest as f64 * factor) as usize + self.obstacles.len();
-        self.constraints.reserve(most);
-        self.neighbours
-            .reserve(most.saturating_sub(self.neighbours.len()));
+        let reserve = |scratch: &mut Scratch| {
+            scratch.constraints.reserve(most);
+            let have = scratch.neighbours.len();
+            scratch.neighbours.reserve(most.saturating_sub(have));
+        };
+        reserve(&mut self.scratch);
+        #[cfg(not(target_arch = "wasm32"))]
+        self.scratches.iter_mut().for_each(reserve);
     }
 
     /// The reach of what a robot senses: the sensing radius, and the collision distance
@@ -310,29 +327,50 @@ impl Simulation {
             *s = r.last.command.v.abs();
         }
         self.find_neighbours();
+        #[cfg(not(target_arch = "wasm32"))]
+        if self.evaluate_in_parallel() {
+            return;
+        }
         for i in 0..self.robots.len() {
             self.evaluate_robot(i);
         }
     }
 
-    /// Robot `i`'s command from what it senses now (the robots within `R_s` at the snapshot's
-    /// speeds, the obstacles within `R_s`): the DVF controller made safe by the barrier. The
-    /// one place where the method enters the loop (see the module doc).
+    /// Robot `i`'s command from what it senses now, into `last`/`commands` (see
+    /// [`Self::evaluation`]).
     // Not inlined: a step and the in-place edits call it, and one copy keeps the wasm module
     // small (a call per robot costs nothing next to its evaluation).
     #[inline(never)]
     fn evaluate_robot(&mut self, i: usize) {
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let (e, chord) = self.evaluation(i, &mut scratch);
+        self.scratch = scratch;
+        self.store(i, e, chord);
+    }
+
+    fn store(&mut self, i: usize, e: Evaluation, chord: DVec2) {
+        self.robots[i].last = e;
+        self.commands[i] = e.command;
+        self.chords[i] = chord;
+    }
+
+    /// Robot `i`'s command from what it senses now (the robots within `R_s` at the snapshot's
+    /// speeds, the obstacles within `R_s`): the DVF controller made safe by the barrier, with
+    /// the chord of its step. The one place where the method enters the loop (see the module
+    /// doc). It reads the snapshot only, so robots can be evaluated in any order or at once.
+    fn evaluation(&self, i: usize, scratch: &mut Scratch) -> (Evaluation, DVec2) {
         let rs = self.params.sense_radius;
         let listed = self.listed();
         // The grid's lists hold the robots within their reach: when that is at most the sensing
         // radius, they are the sensed robots that can change the command (see `reach`).
         let r = if listed { self.reach().min(rs) } else { rs };
         let me = self.robots[i];
-        self.neighbours.clear();
+        let neighbours = &mut scratch.neighbours;
+        neighbours.clear();
         // Either way the sensed robots come in ascending index: the grid's lists are sorted.
         let mut sense = |j: usize, other: &Robot| {
             if j != i && other.pose.p.distance_squared(me.pose.p) <= r * r {
-                self.neighbours.push(Neighbour {
+                neighbours.push(Neighbour {
                     position: other.pose.p,
                     speed: self.speeds[j],
                 });
@@ -352,26 +390,74 @@ impl Simulation {
             p: unrotate_by(self.goal_headings[i], me.pose.p - me.goal.p),
             theta: me.heading_error,
         };
-        let mut e = self.evaluate_at(me.pose, err, self.speeds[i], &self.neighbours);
+        let mut e = self.evaluate_at(me.pose, err, self.speeds[i], neighbours);
         let sensed = sensed_obstacles(&self.obstacles, &self.obstacle_cells, me.pose.p, rs);
         // The neighbours the barrier can bind on at this speed (the others change nothing).
         let binding = safety::neighbour_reach(&self.params, e.command.v);
         let binding2 = binding * binding;
-        (e.command, self.chords[i]) = safety::filter(
-            &mut self.constraints,
+        let chord;
+        (e.command, chord) = safety::filter(
+            &mut scratch.constraints,
             &self.params,
             self.dt,
             me.pose,
             e.command,
             e.field,
-            self.neighbours
+            neighbours
                 .iter()
                 .map(|n| n.position)
                 .filter(|q| q.distance_squared(me.pose.p) <= binding2),
             sensed,
         );
-        self.robots[i].last = e;
-        self.commands[i] = e.command;
+        (e, chord)
+    }
+
+    /// Evaluates every robot on the threads of rayon's pool, in chunks, each with its own
+    /// buffers: the same bits as one after the other (each evaluation reads the snapshot only,
+    /// and lands in its own slot). Returns `false`, doing nothing, below [`PARALLEL_FROM`]
+    /// robots, on one thread, or when [`Self::set_parallel`] turned it off.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn evaluate_in_parallel(&mut self) -> bool {
+        use rayon::prelude::*;
+        let n = self.robots.len();
+        let threads = rayon::current_num_threads();
+        if !self.parallel || n < PARALLEL_FROM || threads < 2 {
+            return false;
+        }
+        // A few chunks per thread, so that one slow chunk does not hold the others up.
+        let chunks = 4 * threads;
+        let size = n.div_ceil(chunks);
+        let mut out = std::mem::take(&mut self.evaluated);
+        out.resize(n, (Evaluation::default(), DVec2::ZERO));
+        let mut scratches = std::mem::take(&mut self.scratches);
+        scratches.resize_with(chunks, Scratch::default);
+        let this = &*self;
+        out.par_chunks_mut(size)
+            .zip(scratches.par_iter_mut())
+            .enumerate()
+            .for_each(|(k, (chunk, scratch))| {
+                for (slot, i) in chunk.iter_mut().zip(k * size..) {
+                    *slot = this.evaluation(i, scratch);
+                }
+            });
+        for (i, &(e, chord)) in out.iter().enumerate() {
+            self.store(i, e, chord);
+        }
+        self.evaluated = out;
+        self.scratches = scratches;
+        true
+    }
+
+    /// Whether a step of a large crowd evaluates its robots on several threads (natively, with
+    /// rayon; on by default). The same bits either way: this only chooses the cost, for
+    /// instance to measure one thread against several, or for a caller that runs many
+    /// simulations on the threads already.
+    #[cfg_attr(target_arch = "wasm32", allow(clippy::unused_self, unused_variables))]
+    pub fn set_parallel(&mut self, on: bool) {
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.parallel = on;
+        }
     }
 
     /// The controller ([`evaluate`]) of a robot at `pose` with error `err` (to its goal) and
@@ -554,6 +640,18 @@ impl Simulation {
             violations: self.metrics.violations,
         }
     }
+}
+
+/// From this many robots a step evaluates them on several threads (natively): below, rayon's
+/// hand-off costs more than it saves.
+pub const PARALLEL_FROM: usize = 256;
+
+/// A robot evaluation's buffers, reused from robot to robot: its sensed neighbours and the
+/// barrier's constraints.
+#[derive(Clone, Debug, Default)]
+struct Scratch {
+    neighbours: Vec<Neighbour>,
+    constraints: safety::Constraints,
 }
 
 /// The skin of the Verlet lists, relative to their reach (see `Simulation::find_neighbours`):
