@@ -35,7 +35,7 @@ use crate::obstacle::Obstacle;
 use crate::params::Params;
 use crate::safety;
 use crate::scenario::Scenario;
-use crate::se2::{continue_branch, heading, unrotate_by, wrap_angle, Pose};
+use crate::se2::{continue_branch, wrap_angle, Pose};
 use crate::swarm::{pair_range, Neighbour};
 use crate::unicycle::integrate_along;
 use crate::Command;
@@ -123,10 +123,8 @@ pub struct Simulation {
     #[cfg(not(target_arch = "wasm32"))]
     evaluated: Vec<(Evaluation, DVec2)>,
     commands: Vec<Command>,
-    // Each command's chord (see `safety::filter`), and each goal's heading (its sine and
-    // cosine, for the error pose).
+    // Each command's chord (see `safety::filter`).
     chords: Vec<DVec2>,
-    goal_headings: Vec<DVec2>,
     speeds: Vec<f64>,
 }
 
@@ -147,7 +145,6 @@ impl Simulation {
             .map(|r| Robot::at(r.start_pose(), r.goal_pose()))
             .collect();
         let n = robots.len();
-        let goal_headings = robots.iter().map(|r| heading(r.goal.theta)).collect();
         let mut sim = Self {
             name: s.name.clone(),
             params: s.params,
@@ -172,7 +169,6 @@ impl Simulation {
             evaluated: Vec::new(),
             commands: vec![Command::default(); n],
             chords: vec![DVec2::ZERO; n],
-            goal_headings,
             speeds: vec![0.0; n],
         };
         sim.build_obstacle_cells();
@@ -262,6 +258,8 @@ impl Simulation {
     /// it is sensed and ignored, so the lists leave it out with the same bits. In a crowd
     /// (`v_max` = 20 m/s) that is 10 m instead of `R_s` = 20: a quarter of the area, which is
     /// what a jam's step costs. Without `v_max` and with a barrier, the sensing radius.
+    // Not inlined: four callers, one copy in the wasm module.
+    #[inline(never)]
     fn reach(&self) -> f64 {
         let p = &self.params;
         let avoidance = pair_range(p.avoid_radius, p.transition_width)
@@ -358,6 +356,8 @@ impl Simulation {
     /// speeds, the obstacles within `R_s`): the DVF controller made safe by the barrier, with
     /// the chord of its step. The one place where the method enters the loop (see the module
     /// doc). It reads the snapshot only, so robots can be evaluated in any order or at once.
+    // Inlined into its one caller in the wasm build (which has no parallel step): smaller.
+    #[cfg_attr(target_arch = "wasm32", inline(always))]
     fn evaluation(&self, i: usize, scratch: &mut Scratch) -> (Evaluation, DVec2) {
         let rs = self.params.sense_radius;
         let listed = self.listed();
@@ -386,8 +386,7 @@ impl Simulation {
             }
         }
         let err = Pose {
-            // `me.pose.error_to(me.goal).p`, the goal's sine and cosine kept from its placing.
-            p: unrotate_by(self.goal_headings[i], me.pose.p - me.goal.p),
+            p: me.pose.error_to(me.goal).p,
             theta: me.heading_error,
         };
         let mut e = self.evaluate_at(me.pose, err, self.speeds[i], neighbours);
@@ -563,7 +562,6 @@ impl Simulation {
         }
         let was = self.robots[i].pose.p;
         self.robots[i] = Robot::at(pose, goal);
-        self.goal_headings[i] = heading(self.robots[i].goal.theta);
         let now = self.robots[i].pose.p;
         if now == was {
             // Only robot `i` depends on its own goal and heading.
