@@ -12,6 +12,7 @@
 //!
 //!   cargo bench --bench peer                 # 1,000 robots: every phase
 //!   cargo bench --bench peer -- 10000 open   # 10,000 robots, open space only
+//!   cargo bench --bench peer -- 1000 jam     # open space and the jam, not the whole run
 //!
 //! ORCA's agents are holonomic discs of radius `r_ij` with the crowd's speed limit, preferring
 //! the velocity straight to their goal (slowing to land on it); an agent has arrived within
@@ -36,6 +37,7 @@ const OPEN_S: f64 = 2.0;
 const JAM_STEPS: usize = 200;
 
 /// ORCA on the crowd of a scenario.
+#[derive(Clone)]
 struct Orca {
     agents: Vec<Cow<'static, Agent>>,
     goals: Vec<Vec2>,
@@ -149,6 +151,19 @@ fn time(steps: usize, mut step: impl FnMut()) -> f64 {
     t0.elapsed().as_secs_f64() * 1e3 / steps.max(1) as f64
 }
 
+/// Milliseconds per step of copies of `open` and of `jam`, stepped in turns of a few steps
+/// each (ten turns of 20 steps).
+fn turns<T: Clone>(open: &T, jam: &T, step: fn(&mut T)) -> (f64, f64) {
+    let (mut a, mut b) = (0.0, 0.0);
+    for _ in 0..10 {
+        let mut x = open.clone();
+        a += time(20, || step(&mut x));
+        let mut y = jam.clone();
+        b += time(20, || step(&mut y));
+    }
+    (a / 10.0, b / 10.0)
+}
+
 fn all_converged(sim: &Simulation) -> bool {
     let p = sim.params();
     sim.robots()
@@ -163,6 +178,7 @@ fn main() {
         .collect();
     let n: usize = args.first().and_then(|a| a.parse().ok()).unwrap_or(1_000);
     let only_open = args.iter().any(|a| a == "open");
+    let no_whole_run = args.iter().any(|a| a == "jam");
     let s = crowd(n);
     let steps_of = |seconds: f64| (seconds / s.dt).round() as usize;
     let mut lines = Vec::new();
@@ -201,11 +217,29 @@ fn main() {
             sim.step();
             orca.step();
         }
+        // The jam against open space, each planner on its own: copies of the state at t = 0
+        // and in the jam stepped in short turns, so that both phases see the same machine load
+        // (the ratio the jam's bound is about).
+        let (dvf_open, dvf_jam) = turns(&serial(&s), &sim, Simulation::step);
+        let (orca_open, orca_jam) = turns(&Orca::new(&s), &orca, Orca::step);
+        report(
+            "jam",
+            dvf_jam,
+            orca_jam,
+            format!(
+                r#", "t": {:.1}, "dvf_jam_over_open": {:.3}, "orca_jam_over_open": {:.3}"#,
+                sim.time(),
+                dvf_jam / dvf_open,
+                orca_jam / orca_open
+            ),
+        );
         for _ in 0..3 {
             let dvf = time(JAM_STEPS, || sim.step());
             let peer = time(JAM_STEPS, || orca.step());
             report("jam", dvf, peer, format!(r#", "t": {:.1}"#, sim.time()));
         }
+    }
+    if !only_open && !no_whole_run {
         // The whole run to the last arrival (or the scenario's end).
         let total = s.steps();
         let mut sim = serial(&s);

@@ -2,6 +2,9 @@
 // {"robots": N, "steps": S, "obstacles": M, "ms_per_step": x}.
 //
 //   make build-wasm && node benches/wasm.mjs --robots 1000 --steps 100 [--obstacles 0]
+//
+// `--wasm FILE` times another build of the same crate (say, one with SIMD128) through the same
+// bindings: two builds compared in one run.
 
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -24,7 +27,9 @@ const robots = option('robots', 1000);
 const steps = option('steps', 100);
 const obstacles = option('obstacles', 0);
 
-const wasmPath = fileURLToPath(new URL('../www/pkg/dvf_bg.wasm', import.meta.url));
+const other = process.argv.indexOf('--wasm');
+const wasmPath =
+  other >= 0 ? process.argv[other + 1] : fileURLToPath(new URL('../www/pkg/dvf_bg.wasm', import.meta.url));
 await init({ module_or_path: readFileSync(wasmPath) });
 
 let bench;
