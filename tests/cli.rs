@@ -169,12 +169,15 @@ fn simulate_table1_prints_one_report_that_meets_table1() {
             "min_pair_distance",
             "name",
             "robots",
+            "smoothness",
             "steps",
             "time",
             "violations"
         ]
     );
     assert!(r["name"].is_string());
+    // Free space, each robot alone: no robot chatters once it reached its goal position.
+    assert_eq!(r["smoothness"]["chattering_robots"], 0);
     // 60 s at 0.01 s: exactly 6000 steps; the time is 6000 · 0.01 up to round-off.
     assert_eq!(r["steps"], 6000);
     assert!((num(&r["time"]) - 60.0).abs() < 1e-9);
@@ -188,7 +191,24 @@ fn simulate_table1_prints_one_report_that_meets_table1() {
     for (i, (rob, goal)) in robots.iter().zip(TABLE1_GOALS).enumerate() {
         assert_eq!(
             keys(rob),
-            ["converged_at", "final", "heading_error", "position_error"],
+            [
+                "converged_at",
+                "final",
+                "heading_error",
+                "position_error",
+                "smoothness"
+            ],
+            "robot {i}"
+        );
+        assert_eq!(
+            keys(&rob["smoothness"]),
+            [
+                "max_omega_step",
+                "reversals",
+                "settled_max_omega_step",
+                "settled_reversals",
+                "settled_steps"
+            ],
             "robot {i}"
         );
         let f: Vec<f64> = rob["final"]
@@ -767,8 +787,19 @@ fn sweep_summarises_random_scenarios_and_refuses_bad_options() {
             "scenarios",
             "seed",
             "skipped",
+            "smoothness",
             "success_rate",
             "violations"
+        ]
+    );
+    assert_eq!(
+        keys(&v["smoothness"]),
+        [
+            "chattering_robots",
+            "max_omega_step",
+            "reversals_per_s",
+            "settled_max_omega_step",
+            "settled_reversals_per_s"
         ]
     );
     assert_eq!(
@@ -807,6 +838,29 @@ fn sweep_summarises_random_scenarios_and_refuses_bad_options() {
     assert_rejected(&["sweep", "--barrier-rate", "-1"], &["barrier-rate"]);
     assert_rejected(&["sweep", "--barrier-rate", "80"], &["dt", "barrier_rate"]);
     assert_rejected(&["sweep", "--avoidance", "orbit"], &["orbit"]);
+    assert_rejected(&["sweep", "--family", "swarm"], &["swarm"]);
+    assert_rejected(&["sweep", "--spacing", "4"], &["spacing", "formation"]);
+    assert_rejected(
+        &["sweep", "--family", "formation", "--spacing", "1..=3"],
+        &["spacing", "between 2 and 100"],
+    );
+}
+
+/// The families reach the scenarios: a formation sweep and a dense one differ from the random
+/// one of the same seed and have the robot counts of their recipes; `--spacing` changes the
+/// formation scenes.
+#[test]
+fn sweep_families_draw_their_own_scenes() {
+    let sweep = |extra: &[&str]| dvf_json(&[&["sweep", "--seed", "5"][..], extra].concat());
+    let nine = ["--count", "2", "--robots", "9..=9", "--obstacles", "0..=0"];
+    let random = sweep(&nine);
+    let formation = sweep(&[&nine[..], &["--family", "formation"]].concat());
+    assert_eq!(num(&formation["robots"]), 18.0);
+    assert_ne!(random, formation);
+    let wide = sweep(&[&nine[..], &["--family", "formation", "--spacing", "8"]].concat());
+    assert_ne!(wide, formation);
+    let dense = sweep(&["--family", "dense", "--count", "1", "--robots", "24..=24"]);
+    assert_eq!(num(&dense["robots"]) as usize % 24, 0);
 }
 
 /// `dvf bench` prints one JSON line with the documented keys in the documented order, and
@@ -887,6 +941,27 @@ fn sharded_sweeps_merge_to_the_unsharded_summary() {
     let other = dvf(&[
         "sweep", "--seed", "21", "--count", "1", "--robots", "3..=5", "--shard", "1/1",
     ]);
+    // A shard of another family of the same seeds is another recipe.
+    let formation = dvf(&[
+        &["sweep"][..],
+        &recipe,
+        &["--family", "formation", "--shard", "1/3"],
+    ]
+    .concat());
+    let formation_path = dir.join("formation.jsonl");
+    std::fs::write(&formation_path, stdout(&formation)).unwrap();
+    let families = dvf(&[
+        "sweep",
+        "merge",
+        &formation_path.display().to_string(),
+        &files[1],
+        &files[2],
+    ]);
+    assert!(
+        stderr(&families).contains("another recipe"),
+        "{}",
+        stderr(&families)
+    );
     let other_path = dir.join("other.jsonl");
     std::fs::write(&other_path, stdout(&other)).unwrap();
     let mixed = dvf(&[

@@ -19,7 +19,7 @@ mod cli {
     use dvf::presets::{preset, PRESETS};
     use dvf::scenario::Scenario;
     use dvf::sim::{run_recorded, Neighbourhood, Simulation};
-    use dvf::sweep::{sweep, Outcome, Recipe, Summary};
+    use dvf::sweep::{sweep, Family, Outcome, Recipe, Summary};
     use std::io::Write;
     use std::path::PathBuf;
 
@@ -87,12 +87,23 @@ mod cli {
             /// Number of scenarios (1 … 1000000).
             #[arg(long, default_value_t = 100)]
             count: usize,
-            /// Robots per scenario, drawn from MIN..=MAX.
-            #[arg(long, value_name = "MIN..=MAX", default_value = "4..=16", value_parser = parse_range)]
-            robots: (usize, usize),
-            /// Obstacles per scenario, drawn from MIN..=MAX.
-            #[arg(long, value_name = "MIN..=MAX", default_value = "0..=5", value_parser = parse_range)]
-            obstacles: (usize, usize),
+            /// The kind of scene: random (the default), dense (24 to 64 robots, 0 to 8
+            /// obstacles) or formation (a column of robots through a row of obstacles into a
+            /// grid, a line or a ring of goal slots).
+            #[arg(long, value_name = "FAMILY", default_value = "random", value_parser = ["random", "dense", "formation"])]
+            family: String,
+            /// Robots per scenario, drawn from MIN..=MAX (the family's range by default:
+            /// random 4..=16, dense 24..=64, formation 9..=25).
+            #[arg(long, value_name = "MIN..=MAX", value_parser = parse_range)]
+            robots: Option<(usize, usize)>,
+            /// Obstacles per scenario, drawn from MIN..=MAX (random 0..=5, dense 0..=8,
+            /// formation 0..=3).
+            #[arg(long, value_name = "MIN..=MAX", value_parser = parse_range)]
+            obstacles: Option<(usize, usize)>,
+            /// Formation family: the distance between neighbouring goal slots in units of
+            /// safe_radius, drawn from MIN..=MAX (at least 2; 3..=6 by default).
+            #[arg(long, value_name = "MIN..=MAX", value_parser = parse_spacing)]
+            spacing: Option<(f64, f64)>,
             /// Robot avoidance: exit (the default) or paper.
             #[arg(long, value_name = "MODE", default_value = "exit", value_parser = ["exit", "paper"])]
             avoidance: String,
@@ -169,7 +180,23 @@ mod cli {
         Ok((a, b))
     }
 
-    /// A positive barrier rate, or `none`.
+    /// `A..=B` (or a single number) of goal spacings, each at least 2 and at most 100.
+    fn parse_spacing(text: &str) -> Result<(f64, f64), String> {
+        let (a, b) = text.split_once("..=").unwrap_or((text, text));
+        let num = |t: &str| match t.trim().parse::<f64>() {
+            Ok(x) if (2.0..=100.0).contains(&x) => Ok(x),
+            _ => Err(format!(
+                "expected MIN..=MAX of spacings between 2 and 100, not {text:?}"
+            )),
+        };
+        let (a, b) = (num(a)?, num(b)?);
+        if a > b {
+            return Err(format!("{text:?}: MIN is larger than MAX"));
+        }
+        Ok((a, b))
+    }
+
+    /// `K/N` with `1 ≤ K ≤ N`.
     fn parse_shard(text: &str) -> Result<(usize, usize), String> {
         let parsed = text
             .split_once('/')
@@ -236,6 +263,7 @@ mod cli {
         Ok(Summary::of(first, &outcomes))
     }
 
+    /// A positive barrier rate, or `none`.
     fn parse_rate(text: &str) -> Result<Option<f64>, String> {
         if text == "none" {
             return Ok(None);
@@ -330,12 +358,29 @@ mod cli {
                 shard,
                 seed,
                 count,
+                family,
                 robots,
                 obstacles,
+                spacing,
                 avoidance,
                 barrier_rate,
                 write,
             } => {
+                let family = match family.as_str() {
+                    "dense" => Family::Dense,
+                    "formation" => Family::Formation,
+                    _ => Family::Random,
+                };
+                let mut recipe = Recipe::of(family);
+                let robots = robots.unwrap_or((*recipe.robots.start(), *recipe.robots.end()));
+                let obstacles =
+                    obstacles.unwrap_or((*recipe.obstacles.start(), *recipe.obstacles.end()));
+                if let Some((a, b)) = spacing {
+                    if family != Family::Formation {
+                        return Err("spacing: only the formation family has goal slots".into());
+                    }
+                    recipe.spacing = a..=b;
+                }
                 if !(1..=MAX_SWEEP).contains(&count) {
                     return Err(format!(
                         "count: must be between 1 and {MAX_SWEEP}, not {count}"
@@ -354,11 +399,8 @@ mod cli {
                         obstacles.1
                     ));
                 }
-                let mut recipe = Recipe {
-                    robots: robots.0..=robots.1,
-                    obstacles: obstacles.0..=obstacles.1,
-                    ..Recipe::default()
-                };
+                recipe.robots = robots.0..=robots.1;
+                recipe.obstacles = obstacles.0..=obstacles.1;
                 recipe.params.avoidance = if avoidance == "paper" {
                     Avoidance::Paper
                 } else {
@@ -366,7 +408,7 @@ mod cli {
                 };
                 recipe.params.barrier_rate = parse_rate(&barrier_rate)?;
                 // The parameters are the same for every scenario: check them once.
-                if let Some(first) = dvf::sweep::random_scenario(&recipe, seed) {
+                if let Some(first) = dvf::sweep::scenario(&recipe, seed) {
                     first.validate().map_err(|e| e.to_string())?;
                 }
                 if let Some(dir) = &write {

@@ -1,9 +1,12 @@
 //! The metrics of the paper's figures, observed after every step: since when each robot has been
 //! at its goal, the smallest distance between two robots and from a robot to an obstacle, and
 //! the violation events (a pair closer than `2·r_ij`, a robot inside an obstacle disc; one
-//! event for as long as it lasts). Planner-independent: they read poses and the neighbourhood
+//! event for as long as it lasts), and how smooth each robot's commands are
+//! (`smoothness.rs`). Planner-independent: they read poses and the neighbourhood
 //! structures only.
 
+#[cfg(not(target_arch = "wasm32"))]
+use super::smoothness::Tally;
 use super::{Neighbourhood, Robot};
 use crate::grid::{Neighbours, ObstacleCells};
 use crate::obstacle::Obstacle;
@@ -16,6 +19,13 @@ pub(super) struct Metrics {
     pub(super) min_pair: Option<f64>,
     pub(super) min_clearance: Option<f64>,
     pub(super) violations: usize,
+    /// Each robot's commands ([`Tally`]). Native only: the wasm module's size budget (the page
+    /// does not show them).
+    #[cfg(not(target_arch = "wasm32"))]
+    pub(super) tallies: Vec<Tally>,
+    // Whether each robot has reached its goal position (within `tol_position`) yet.
+    #[cfg(not(target_arch = "wasm32"))]
+    reached: Vec<bool>,
     // The pairs `(i, j)`, `i < j`, closer than `2·r_ij`, ascending; `pair_scratch` receives the
     // current step's before the two are swapped.
     pair_violating: Vec<(u32, u32)>,
@@ -53,6 +63,10 @@ impl Metrics {
             min_pair: None,
             min_clearance: None,
             violations: 0,
+            #[cfg(not(target_arch = "wasm32"))]
+            tallies: vec![Tally::default(); n],
+            #[cfg(not(target_arch = "wasm32"))]
+            reached: vec![false; n],
             // Room for a violating pair per robot: a violation allocates nothing.
             pair_violating: Vec::with_capacity(n),
             pair_scratch: Vec::with_capacity(n),
@@ -67,6 +81,11 @@ impl Metrics {
         self.min_pair = None;
         self.min_clearance = None;
         self.violations = 0;
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.tallies.fill(Tally::default());
+            self.reached.fill(false);
+        }
         self.pair_violating.clear();
         self.obstacle_violating.clear();
     }
@@ -77,8 +96,13 @@ impl Metrics {
         let reach = o.reach;
         self.obstacle_scratch.clear();
         for (i, r) in o.robots.iter().enumerate() {
-            let inside =
-                r.position_error() <= p.tol_position && r.heading_error_abs() <= p.tol_heading;
+            let at_position = r.position_error() <= p.tol_position;
+            #[cfg(not(target_arch = "wasm32"))]
+            {
+                self.reached[i] |= at_position;
+                self.tallies[i].observe(r.last.command.omega, self.reached[i]);
+            }
+            let inside = at_position && r.heading_error_abs() <= p.tol_heading;
             match (inside, self.inside_since[i]) {
                 (true, None) => self.inside_since[i] = Some(o.time),
                 (false, Some(_)) => self.inside_since[i] = None,

@@ -25,6 +25,7 @@
 mod metrics;
 pub mod report;
 pub mod run;
+pub mod smoothness;
 
 pub use report::{Report, RobotReport};
 pub use run::{run, run_recorded, run_with, Sample};
@@ -617,6 +618,11 @@ impl Simulation {
 
     /// The report of the run so far.
     #[must_use]
+    // The index picks the smoothness tally, which the wasm module leaves out.
+    #[cfg_attr(
+        target_arch = "wasm32",
+        allow(unused_variables, clippy::unused_enumerate_index)
+    )]
     pub fn report(&self) -> Report {
         Report {
             name: self.name.clone(),
@@ -626,16 +632,25 @@ impl Simulation {
                 .robots
                 .iter()
                 .zip(&self.metrics.inside_since)
-                .map(|(r, since)| RobotReport {
+                .enumerate()
+                .map(|(i, (r, since))| RobotReport {
                     final_pose: r.pose.to_array(),
                     position_error: r.position_error(),
                     heading_error: r.heading_error_abs(),
                     converged_at: *since,
+                    #[cfg(not(target_arch = "wasm32"))]
+                    smoothness: self.metrics.tallies[i],
                 })
                 .collect(),
             min_pair_distance: self.metrics.min_pair,
             min_obstacle_clearance: self.metrics.min_clearance,
             violations: self.metrics.violations,
+            #[cfg(not(target_arch = "wasm32"))]
+            smoothness: smoothness::Smoothness::of(
+                &self.metrics.tallies,
+                self.steps.max(1) as u64,
+                self.dt,
+            ),
         }
     }
 }

@@ -1,6 +1,9 @@
 //! The outcome of a run: per robot, where it ended and since when it has been at its goal; over
-//! the run, the smallest distances and the violation events (`sim/metrics.rs` keeps them).
+//! the run, the smallest distances, the violation events (`sim/metrics.rs` keeps them) and the
+//! smoothness of the commands ([`super::smoothness`]).
 
+#[cfg(not(target_arch = "wasm32"))]
+use super::smoothness::{Smoothness, Tally};
 use serde::Serialize;
 
 /// Per-robot outcome in a [`Report`].
@@ -16,6 +19,10 @@ pub struct RobotReport {
     /// The time after which the robot stayed within `tol_position` and `tol_heading` to the
     /// end of the run; `None` if it was outside at the end.
     pub converged_at: Option<f64>,
+    /// How smooth its turn rate was, over the run and after it reached its goal position.
+    /// Native only: the wasm module's size budget (the page does not show it).
+    #[cfg(not(target_arch = "wasm32"))]
+    pub smoothness: Tally,
 }
 
 /// The outcome of a run (the JSON that `dvf simulate` prints).
@@ -41,4 +48,7 @@ pub struct Report {
     /// each time a robot enters an obstacle disc, counts once (a violation that lasts several
     /// steps is one event).
     pub violations: usize,
+    /// How smooth the robots' turn rates were, over all robots. Native only, as the robots'.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub smoothness: Smoothness,
 }
