@@ -4,7 +4,7 @@
 PORT ?= 8080
 export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
 
-.PHONY: serve build-wasm test lint lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser bench-peer picture
+.PHONY: package docs serve build-wasm test lint lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser bench-peer picture
 
 tools:
 	bash .ci/install
@@ -14,6 +14,11 @@ tools:
 # natively): smaller, as fast in Node and Chromium (README, Performance).
 build-wasm: tools
 	CARGO_PROFILE_RELEASE_OPT_LEVEL=2 wasm-pack build --release --target web --out-dir www/pkg
+
+# The npm package dvf-playground from the release build (package/build.mjs, its README the
+# embedding guide): target/package/dvf-playground/ and its `npm pack` tarball beside it.
+package: build-wasm
+	node package/build.mjs
 
 serve: build-wasm
 	@echo "dvf playground: http://127.0.0.1:$(PORT)/"
@@ -48,6 +53,7 @@ test-browser: tools
 test-e2e: build-wasm
 	node tests/e2e/smoke.mjs
 	node tests/e2e/embed.mjs
+	node tests/e2e/figures.mjs
 
 test: tools lint test-native test-node test-browser test-e2e
 
