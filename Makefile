@@ -50,10 +50,11 @@ test-browser: tools
 
 # The pages as users load them: the release package, served, driven in Chromium (screenshots and
 # figures in test-results/).
-test-e2e: build-wasm
+test-e2e: package
 	node tests/e2e/smoke.mjs
 	node tests/e2e/embed.mjs
 	node tests/e2e/figures.mjs
+	node tests/e2e/recipes.mjs
 
 test: tools lint test-native test-node test-browser test-e2e
 
