@@ -20,8 +20,21 @@ build-wasm: tools
 package: build-wasm
 	node package/build.mjs
 
+# The paper as a live book (docs/book/, mdBook) in target/book/: built from a copy in
+# target/docs/ with the package's files in its src/dvf-playground/, so that the tree stays as
+# it is.
+docs: package
+	rm -rf target/docs target/book
+	mkdir -p target/docs
+	cp -r docs/book docs/notes-on-the-paper.md target/docs/
+	cp -r target/package/dvf-playground target/docs/book/src/dvf-playground
+	mdbook build target/docs/book --dest-dir $(CURDIR)/target/book
+
+# The playground; the book too, at /book/, once `make docs` has built it (the page links it).
 serve: build-wasm
 	@echo "dvf playground: http://127.0.0.1:$(PORT)/"
+	@if [ -d target/book ]; then ln -sfn ../target/book www/book; echo "the book: http://127.0.0.1:$(PORT)/book/"; \
+	else rm -f www/book; fi
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
 
 lint: lint-rust lint-js
@@ -50,11 +63,12 @@ test-browser: tools
 
 # The pages as users load them: the release package, served, driven in Chromium (screenshots and
 # figures in test-results/).
-test-e2e: package
+test-e2e: package docs
 	node tests/e2e/smoke.mjs
 	node tests/e2e/embed.mjs
 	node tests/e2e/figures.mjs
 	node tests/e2e/recipes.mjs
+	node tests/e2e/book.mjs
 
 test: tools lint test-native test-node test-browser test-e2e
 
