@@ -86,12 +86,19 @@ await run(async ({ newPage }) => {
       const b = await import('dvf-playground');
       const inline = await import('dvf-playground/inline');
       const wasm = await import('dvf-playground/wasm');
+      const { createRequire } = await import('node:module');
+      const { existsSync } = await import('node:fs');
+      const resolve = createRequire(\`\${process.cwd()}/\`).resolve;
+      const files = ['playground.css', 'dvf_bg.wasm', 'loader.js', 'mdbook.js', 'package.json']
+        .map((f) => resolve(\`dvf-playground/\${f}\`))
+        .filter((f) => existsSync(f)).length;
       console.log(JSON.stringify({
         same: a.DvfPlayground === b.DvfPlayground,
         inline: typeof inline.DvfPlayground,
         bindings: typeof wasm.Playground,
         defined: typeof globalThis.customElements,
         fetches,
+        files,
       }));`;
     const node = JSON.parse(sh(empty, 'node', ['--input-type=module', '-e', probe]));
     check(
@@ -99,6 +106,7 @@ await run(async ({ newPage }) => {
       'Node imports the element twice, its single-file build and the bindings without a DOM',
     );
     check(node.defined === 'undefined' && node.fetches === 0, 'importing in Node defines nothing and fetches nothing');
+    check(node.files === 5, `the exports map names the stylesheet, the wasm module and the scripts (${node.files} of 5)`);
 
     // --- Plain HTML from a static server, and from file://. ---
     const plain = join(SCRATCH, 'plain-html');
