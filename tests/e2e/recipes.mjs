@@ -106,7 +106,10 @@ await run(async ({ newPage }) => {
       'Node imports the element twice, its single-file build and the bindings without a DOM',
     );
     check(node.defined === 'undefined' && node.fetches === 0, 'importing in Node defines nothing and fetches nothing');
-    check(node.files === 5, `the exports map names the stylesheet, the wasm module and the scripts (${node.files} of 5)`);
+    check(
+      node.files === 5,
+      `the exports map names the stylesheet, the wasm module and the scripts (${node.files} of 5)`,
+    );
 
     // --- Plain HTML from a static server, and from file://. ---
     const plain = join(SCRATCH, 'plain-html');
