@@ -103,7 +103,7 @@ import { setWasmSource } from './playground/wasm-views.js';
 
 /** @typedef {import('./dvf-playground.js').DvfPlayground} Declared the element's declaration */
 
-/** A figure this far (CSS px) from the viewport counts as visible (`loading="lazy"`). */
+/** `loading="lazy"`: the scene loads once the element is this close (CSS px) to the viewport. */
 const LAZY_MARGIN = '200px';
 
 /**
@@ -159,12 +159,14 @@ export class DvfPlayground extends Base {
   #resolveLoaded = () => {};
   /** @type {ResizeObserver | null} */
   #resizeObserver = null;
-  /** @type {IntersectionObserver | null} for `loading="lazy"` and `autoplay="visible"` */
-  #visibility = null;
-  /** The element is on screen (within LAZY_MARGIN); true until an observer says otherwise. */
-  #visible = true;
-  /** @type {(() => void) | null} starts the scene once visible (`loading="lazy"`) */
-  #whenVisible = null;
+  /** The scene the attributes ask for is being loaded (or has been). */
+  #startAsked = false;
+  /** @type {IntersectionObserver | null} `loading="lazy"`: starts the scene once near the viewport */
+  #nearObserver = null;
+  /** @type {IntersectionObserver | null} `autoplay="visible"`: plays while on screen */
+  #screenObserver = null;
+  /** The element is on screen; true unless `autoplay="visible"`'s observer says otherwise. */
+  #onScreen = true;
   #onWindowResize = () => this.#controller?.requestDraw();
 
   constructor() {
@@ -190,17 +192,19 @@ export class DvfPlayground extends Base {
     this.#resizeObserver.observe(c.canvas);
     this.#resizeObserver.observe(c.$('plots'));
     window.addEventListener('resize', this.#onWindowResize);
-    this.#observeVisibility();
-    if (!first) return;
-    if (this.getAttribute('loading') === 'lazy' && !this.#visible) this.#whenVisible = () => this.#start();
+    this.#observeScreen();
+    if (this.#startAsked) return;
+    if (this.getAttribute('loading') === 'lazy' && typeof IntersectionObserver !== 'undefined') this.#startWhenNear();
     else this.#start();
   }
 
   disconnectedCallback() {
     this.#controller?.disconnect();
     this.#resizeObserver?.disconnect();
-    this.#visibility?.disconnect();
-    this.#visibility = null;
+    this.#nearObserver?.disconnect();
+    this.#nearObserver = null;
+    this.#screenObserver?.disconnect();
+    this.#screenObserver = null;
     window.removeEventListener('resize', this.#onWindowResize);
   }
 
@@ -210,33 +214,38 @@ export class DvfPlayground extends Base {
     if (name === 'preset' && value) this.#loadPreset(value);
     else if (name === 'src' && value) c.loadUrl(value);
     else if (name === 'time') this.#seekAttribute();
-    else if (name === 'autoplay') this.#observeVisibility();
+    else if (name === 'autoplay') this.#observeScreen();
     else this.#readDisplayAttributes();
     this.#readModes();
     c.requestDraw();
   }
 
-  /**
-   * Watches whether the element is on screen when something depends on it: `loading="lazy"`
-   * (start once visible) and `autoplay="visible"` (play when visible, pause when not).
-   */
-  #observeVisibility() {
-    const wanted = this.getAttribute('loading') === 'lazy' || this.getAttribute('autoplay') === 'visible';
-    if (!wanted || this.#visibility || typeof IntersectionObserver === 'undefined') return;
-    this.#visible = false;
-    this.#visibility = new IntersectionObserver(
+  /** `loading="lazy"`: loads the scene once the element comes within LAZY_MARGIN of the viewport. */
+  #startWhenNear() {
+    this.#nearObserver = new IntersectionObserver(
       (entries) => {
-        const visible = entries[entries.length - 1].isIntersecting;
-        if (visible === this.#visible) return;
-        this.#visible = visible;
-        const start = this.#whenVisible;
-        this.#whenVisible = null;
-        start?.();
-        if (this.#started && this.getAttribute('autoplay') === 'visible') this.#autoplay();
+        if (!entries.some((e) => e.isIntersecting)) return;
+        this.#nearObserver?.disconnect();
+        this.#nearObserver = null;
+        this.#start();
       },
       { rootMargin: LAZY_MARGIN },
     );
-    this.#visibility.observe(this);
+    this.#nearObserver.observe(this);
+  }
+
+  /** `autoplay="visible"`: watches whether the element is on screen, to play and pause it. */
+  #observeScreen() {
+    if (this.getAttribute('autoplay') !== 'visible' || this.#screenObserver) return;
+    if (typeof IntersectionObserver === 'undefined') return;
+    this.#onScreen = false;
+    this.#screenObserver = new IntersectionObserver((entries) => {
+      const onScreen = entries[entries.length - 1].isIntersecting;
+      if (onScreen === this.#onScreen) return;
+      this.#onScreen = onScreen;
+      if (this.#started) this.#autoplay();
+    });
+    this.#screenObserver.observe(this);
   }
 
   /** `autoplay`: plays once loaded; `autoplay="visible"`: plays while on screen. */
@@ -244,13 +253,14 @@ export class DvfPlayground extends Base {
     const c = this.#controller;
     if (!c?.pg || !this.hasAttribute('autoplay')) return;
     if (this.getAttribute('autoplay') !== 'visible') c.play();
-    else if (!this.#visible) c.pause();
+    else if (!this.#onScreen) c.pause();
     // Back on screen: plays on, but a finished run starts over only with `loop`.
     else if (!c.pg.finished || c.looping) c.play();
   }
 
   /** Loads the scene the attributes ask for, then resolves `loaded`. */
   async #start() {
+    this.#startAsked = true;
     const c = this.#controller;
     if (!(await c.ready())) {
       this.#resolveLoaded();
