@@ -161,5 +161,22 @@ await run(async ({ base, newPage }) => {
   await page.waitForFunction(() => !document.getElementById('visible').playing);
   const paused = await page.evaluate(() => document.getElementById('visible').time);
   check(paused > 0, `scrolled out, it pauses (t = ${paused.toFixed(2)} s)`);
+  // A lazy figure taken out of the page before it loaded loads once it is back in view.
+  const back = await page.evaluate(async (below) => {
+    const el = document.createElement('dvf-playground');
+    el.setAttribute('preset', 'example3-line-swap');
+    el.setAttribute('loading', 'lazy');
+    el.style.cssText = `height: 200px; margin-top: ${below}px`;
+    document.body.append(el);
+    await new Promise((r) => setTimeout(r, 300));
+    const before = el.scenario();
+    el.remove();
+    el.style.marginTop = '0';
+    document.body.prepend(el);
+    window.scrollTo(0, 0);
+    await el.loaded;
+    return { before, after: el.scenario()?.robots.length };
+  }, BELOW_FOLD_PX * 2);
+  check(back.before === null && back.after === 5, 'a lazy figure moved into view after leaving the page loads there');
   checkQuiet(page, 'figures page (the bad src aside)');
 });
