@@ -4,7 +4,7 @@
 PORT ?= 8080
 export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
 
-.PHONY: serve build-wasm test lint lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser bench-peer picture
+.PHONY: package docs serve build-wasm test lint lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser bench-peer picture
 
 tools:
 	bash .ci/install
@@ -15,8 +15,26 @@ tools:
 build-wasm: tools
 	CARGO_PROFILE_RELEASE_OPT_LEVEL=2 wasm-pack build --release --target web --out-dir www/pkg
 
+# The npm package dvf-playground from the release build (package/build.mjs, its README the
+# embedding guide): target/package/dvf-playground/ and its `npm pack` tarball beside it.
+package: build-wasm
+	node package/build.mjs
+
+# The paper as a live book (docs/book/, mdBook) in target/book/: built from a copy in
+# target/docs/ with the package's files in its src/dvf-playground/, so that the tree stays as
+# it is.
+docs: package
+	rm -rf target/docs target/book
+	mkdir -p target/docs
+	cp -r docs/book docs/notes-on-the-paper.md target/docs/
+	cp -r target/package/dvf-playground target/docs/book/src/dvf-playground
+	mdbook build target/docs/book --dest-dir $(CURDIR)/target/book
+
+# The playground; the book too, at /book/, once `make docs` has built it (the page links it).
 serve: build-wasm
 	@echo "dvf playground: http://127.0.0.1:$(PORT)/"
+	@if [ -d target/book ]; then ln -sfn ../target/book www/book; echo "the book: http://127.0.0.1:$(PORT)/book/"; \
+	else rm -f www/book; fi
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
 
 lint: lint-rust lint-js
@@ -45,9 +63,12 @@ test-browser: tools
 
 # The pages as users load them: the release package, served, driven in Chromium (screenshots and
 # figures in test-results/).
-test-e2e: build-wasm
+test-e2e: package docs
 	node tests/e2e/smoke.mjs
 	node tests/e2e/embed.mjs
+	node tests/e2e/figures.mjs
+	node tests/e2e/recipes.mjs
+	node tests/e2e/book.mjs
 
 test: tools lint test-native test-node test-browser test-e2e
 

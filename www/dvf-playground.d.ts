@@ -149,8 +149,20 @@ export interface DvfPlaygroundAttributes {
   src?: string;
   /** Present: the full toolbar and side panels. */
   controls?: boolean;
-  /** Present: start playing once loaded. */
-  autoplay?: boolean;
+  /** Present: drags and keys edit the scene without the full controls. */
+  editable?: boolean;
+  /** Present: a figure, not an editor: no drag, no keys, the toolbar's play, pause and reset only. */
+  readonly?: boolean;
+  /** Present: start playing once loaded; `visible`: play while on screen, pause when scrolled out. */
+  autoplay?: boolean | 'visible';
+  /** Present: start over from t = 0 at the end of the run. */
+  loop?: boolean;
+  /** Show the state at this time (s) on load, simulated from t = 0. */
+  time?: number;
+  /** `lazy`: load the scene only once the element comes near the viewport. */
+  loading?: 'lazy' | 'eager';
+  /** URL of `dvf_bg.wasm` (resolved against the page), read by the first element that connects. */
+  wasm?: string;
   /** The field overlay (default `arrows`). */
   field?: FieldMode;
   /** θ(0) of the integral curves, in degrees (default 90). */
@@ -245,10 +257,25 @@ export declare class DvfPlayground extends HTMLElement {
   step(n?: number): number;
   /** Page coordinates (CSS px, like `pageX`/`pageY`) of world point (x, y) in metres. */
   worldToScreen(x: number, y: number): { x: number; y: number };
+  /**
+   * Shows the state at time `t` (s, clamped to the run), simulated from t = 0; paused.
+   * Returns the time reached (a whole number of steps).
+   * @throws Error for a `t` that is not a number.
+   */
+  seek(t: number): number;
+  /** The simulated time now (s); 0 before the first scene. */
+  readonly time: number;
+  /** Whether the clock runs. */
+  readonly playing: boolean;
   /** Shows `text` (as text, never HTML) in the message bar; an empty text hides it. */
   showMessage(text: string): void;
-  /** Resolves once the first scene is shown. */
+  /** Resolves once the first scene is shown, or its failure message (then `scenario()` is null). */
   readonly loaded: Promise<void>;
+  /**
+   * Where every element of the page loads the wasm module from: a URL or the module's bytes,
+   * set before the first element connects. Undefined: `pkg/dvf_bg.wasm` beside the module.
+   */
+  static wasmUrl: string | URL | BufferSource | undefined;
 
   // Diagnostics for the end-to-end tests and benchmarks: not a stable API.
   /** The wasm `Playground` (read only). */
@@ -291,6 +318,10 @@ export declare class DvfPlayground extends HTMLElement {
 export interface DvfPlaygroundEventMap extends HTMLElementEventMap {
   /** After each edit. */
   change: CustomEvent<{ kind: ChangeKind }>;
+  /** After the clock moved (a playing frame that stepped, `step()`, `seek()`). */
+  tick: CustomEvent<{ time: number }>;
+  /** The run reached its end. */
+  finished: CustomEvent<{ time: number }>;
 }
 
 declare global {

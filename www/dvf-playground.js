@@ -10,13 +10,31 @@
 // types of everything below are in dvf-playground.d.ts; README.md, "Embedding", shows it in
 // use.
 //
-// Attributes (read at start; a change applies at once):
+// Importing the module defines <dvf-playground> once (a second import, or a second copy,
+// does nothing) and loads nothing: the wasm module is fetched when the first element connects.
+// Where there is no DOM (a server rendering the page) importing does nothing at all. Until the
+// module runs, the browser shows what the tag holds (fallback content: say there that the
+// figure needs JavaScript and a page served over HTTP); once it runs, the element's own box
+// replaces it. A module that cannot be loaded, a bad `src` or a bad `preset` shows its message
+// in the element's box, and it stays.
+//
+// Attributes (a change applies at once):
 //   preset    a preset name (default: the crate's default preset); `crowd-N` included
-//   src       URL of a scenario JSON file; takes precedence over `preset`. A bad file shows the
-//             message and falls back to the preset
-//   controls  present: the full toolbar and side panels; absent: play, step, reset and the
-//             field menu only, and the wheel zooms only once the canvas is focused (or with Ctrl)
-//   autoplay  present: start playing once loaded (read once)
+//   src       URL of a scenario JSON file, resolved against the page (not this module);
+//             takes precedence over `preset`
+//   controls  present: the full toolbar and side panels, and the scene can be edited; absent:
+//             play, step, reset and the field menu only, nothing to drag, and the wheel zooms
+//             only once the canvas is focused (or with Ctrl)
+//   editable  present: drags and keys edit the scene without the full controls
+//   readonly  present: a figure, not an editor, with or without `controls`: no drag, no keys,
+//             the toolbar's play, pause and reset only (and the plots with `controls`)
+//   autoplay  present: start playing once loaded; `autoplay="visible"`: play while on screen
+//             (IntersectionObserver), pause when scrolled out
+//   loop      present: start over from t = 0 at the end of the run
+//   time      show the state at this time (s) on load: simulated from t = 0 up to there
+//   loading   `lazy`: load the scene only once the element comes near the viewport
+//   wasm      URL of dvf_bg.wasm (resolved against the page), read by the first element that
+//             connects; `DvfPlayground.wasmUrl = url` before that does the same
 //   field     `arrows` (default), `curves` or `none`
 //   theta0    θ(0) of the integral curves, in degrees (default 90)
 //   sensing   present: draw the sensing circles R_s
@@ -34,13 +52,19 @@
 //   reset()               back to t = 0 at the scenario's starts, trails cleared
 //   step(n = 1)           advances n steps of dt and pauses; returns the steps taken; throws
 //                         for an n that is not a whole number from 0 to 10⁶
+//   seek(t)               the state at time t (s, clamped to the run), simulated from t = 0;
+//                         paused; returns the time reached; throws for a t that is no number
 //   worldToScreen(x, y)   page coordinates {x, y} (CSS px, like pageX/pageY) of world point
 //                         (x, y) in metres, for overlays
 //   showMessage(text)     shows text (as text, never HTML) in the element's message bar; an
 //                         empty text hides it (www/main.js reports bad links with it)
 //
 // Properties:
-//   loaded                a promise that resolves once the first scene is shown
+//   loaded                a promise that resolves once the first scene is shown (or, when it
+//                         could not be, its message: scenario() is null then)
+//   time                  the simulated time now (s); 0 before the first scene
+//   playing               whether the clock runs
+//   DvfPlayground.wasmUrl where the page loads the wasm module from (static; see `wasm`)
 //
 // Events:
 //   change                after each edit: a drag, a handle, a key, a parameter, a preset, an
@@ -48,6 +72,9 @@
 //                         `robot-heading`, `goal`, `goal-heading`, `obstacle`, `obstacle-radius`,
 //                         `obstacle-influence`, `add-robot`, `add-obstacle`, `delete`,
 //                         `params`, `preset`, `import`, `undo` or `redo`
+//   tick                  after the clock moved (each playing frame that stepped, step(),
+//                         seek()); `event.detail.time` is the time now (s)
+//   finished              the run reached its end (`event.detail.time`)
 //
 // Diagnostics, for the end-to-end tests and benchmarks (not a stable API; null before the
 // first scene):
@@ -72,30 +99,80 @@
 
 import { Controller, DEFAULT_THETA0_DEG, FIELD_MODES } from './playground/controller.js';
 import { TEMPLATE } from './playground/template.js';
+import { setWasmSource } from './playground/wasm-views.js';
 
 /** @typedef {import('./dvf-playground.js').DvfPlayground} Declared the element's declaration */
+
+/** `loading="lazy"`: the scene loads once the element is this close (CSS px) to the viewport. */
+const LAZY_MARGIN = '200px';
+
+/**
+ * The base class: HTMLElement in a browser; where there is none (a server rendering the page
+ * imports this module), a stand-in, so that importing defines nothing and throws nothing.
+ */
+const Base = /** @type {typeof HTMLElement} */ (globalThis.HTMLElement ?? class {});
 
 /**
  * The live playground element; tsc checks it against its declaration.
  * @implements {Declared}
  */
-export class DvfPlayground extends HTMLElement {
+export class DvfPlayground extends Base {
   static get observedAttributes() {
-    return ['preset', 'src', 'field', 'theta0', 'sensing'];
+    return [
+      'preset',
+      'src',
+      'field',
+      'theta0',
+      'sensing',
+      'time',
+      'controls',
+      'editable',
+      'readonly',
+      'loop',
+      'autoplay',
+    ];
   }
+
+  /**
+   * Where every element of the page loads the wasm module from (a URL, or the module's bytes):
+   * set it before the first element connects (the `wasm` attribute does the same). Undefined:
+   * `pkg/dvf_bg.wasm` beside this module.
+   * @param {string | URL | BufferSource | undefined} source
+   */
+  static set wasmUrl(source) {
+    DvfPlayground.#wasm = source;
+    setWasmSource(source);
+  }
+
+  static get wasmUrl() {
+    return DvfPlayground.#wasm;
+  }
+
+  /** @type {string | URL | BufferSource | undefined} */
+  static #wasm;
 
   /** @type {Controller | null} created when the element is first connected */
   #controller = null;
+  /** The scene the attributes ask for has been tried (loaded, or its message shown). */
+  #started = false;
   /** @type {(value?: unknown) => void} */
   #resolveLoaded = () => {};
   /** @type {ResizeObserver | null} */
   #resizeObserver = null;
+  /** The scene the attributes ask for is being loaded (or has been). */
+  #startAsked = false;
+  /** @type {IntersectionObserver | null} `loading="lazy"`: starts the scene once near the viewport */
+  #nearObserver = null;
+  /** @type {IntersectionObserver | null} `autoplay="visible"`: plays while on screen */
+  #screenObserver = null;
+  /** The element is on screen; true unless `autoplay="visible"`'s observer says otherwise. */
+  #onScreen = true;
   #onWindowResize = () => this.#controller?.requestDraw();
 
   constructor() {
     super();
     this.attachShadow({ mode: 'open' }).innerHTML = TEMPLATE;
-    /** Resolves once the first scene is shown. */
+    /** Resolves once the first scene is shown, or its failure message. */
     this.loaded = new Promise((resolve) => {
       this.#resolveLoaded = resolve;
     });
@@ -104,8 +181,10 @@ export class DvfPlayground extends HTMLElement {
   connectedCallback() {
     // Moved elsewhere in the document, the element keeps its controller and simulation.
     const first = !this.#controller;
+    if (first && this.hasAttribute('wasm')) setWasmSource(new URL(this.getAttribute('wasm'), document.baseURI));
     this.#controller ??= new Controller(this, this.shadowRoot);
     const c = this.#controller;
+    this.#readModes();
     c.connect();
     // The drawing follows the canvases' CSS boxes and the screen's density (which changes
     // come with a window resize).
@@ -113,36 +192,114 @@ export class DvfPlayground extends HTMLElement {
     this.#resizeObserver.observe(c.canvas);
     this.#resizeObserver.observe(c.$('plots'));
     window.addEventListener('resize', this.#onWindowResize);
-    if (first) this.#start();
+    this.#observeScreen();
+    if (this.#startAsked) return;
+    if (this.getAttribute('loading') === 'lazy' && typeof IntersectionObserver !== 'undefined') this.#startWhenNear();
+    else this.#start();
   }
 
   disconnectedCallback() {
     this.#controller?.disconnect();
     this.#resizeObserver?.disconnect();
+    this.#nearObserver?.disconnect();
+    this.#nearObserver = null;
+    this.#screenObserver?.disconnect();
+    this.#screenObserver = null;
     window.removeEventListener('resize', this.#onWindowResize);
   }
 
   attributeChangedCallback(name, oldValue, value) {
     const c = this.#controller;
-    if (!c?.pg || oldValue === value) return;
-    if (name === 'preset' && value) c.loadPreset(value);
+    if (!this.#started || !c?.views || oldValue === value) return;
+    if (name === 'preset' && value) this.#loadPreset(value);
     else if (name === 'src' && value) c.loadUrl(value);
+    else if (name === 'time') this.#seekAttribute();
+    else if (name === 'autoplay') this.#observeScreen();
     else this.#readDisplayAttributes();
+    this.#readModes();
     c.requestDraw();
+  }
+
+  /** `loading="lazy"`: loads the scene once the element comes within LAZY_MARGIN of the viewport. */
+  #startWhenNear() {
+    this.#nearObserver = new IntersectionObserver(
+      (entries) => {
+        if (!entries.some((e) => e.isIntersecting)) return;
+        this.#nearObserver?.disconnect();
+        this.#nearObserver = null;
+        this.#start();
+      },
+      { rootMargin: LAZY_MARGIN },
+    );
+    this.#nearObserver.observe(this);
+  }
+
+  /** `autoplay="visible"`: watches whether the element is on screen, to play and pause it. */
+  #observeScreen() {
+    if (this.getAttribute('autoplay') !== 'visible' || this.#screenObserver) return;
+    if (typeof IntersectionObserver === 'undefined') return;
+    this.#onScreen = false;
+    this.#screenObserver = new IntersectionObserver((entries) => {
+      const onScreen = entries[entries.length - 1].isIntersecting;
+      if (onScreen === this.#onScreen) return;
+      this.#onScreen = onScreen;
+      if (this.#started) this.#autoplay();
+    });
+    this.#screenObserver.observe(this);
+  }
+
+  /** `autoplay`: plays once loaded; `autoplay="visible"`: plays while on screen. */
+  #autoplay() {
+    const c = this.#controller;
+    if (!c?.pg || !this.hasAttribute('autoplay')) return;
+    if (this.getAttribute('autoplay') !== 'visible') c.play();
+    else if (!this.#onScreen) c.pause();
+    // Back on screen: plays on, but a finished run starts over only with `loop`.
+    else if (!c.pg.finished || c.looping) c.play();
   }
 
   /** Loads the scene the attributes ask for, then resolves `loaded`. */
   async #start() {
+    this.#startAsked = true;
     const c = this.#controller;
-    if (!(await c.ready())) return;
+    if (!(await c.ready())) {
+      this.#resolveLoaded();
+      return;
+    }
+    this.#started = true;
     this.#readDisplayAttributes();
     const src = this.getAttribute('src');
-    let ok = false;
-    if (src) ok = await c.loadUrl(src);
-    if (!ok) ok = c.loadPreset(this.getAttribute('preset') || c.defaultPreset, { quiet: Boolean(src) });
-    if (!ok) c.loadPreset(c.defaultPreset, { quiet: true });
-    if (this.hasAttribute('autoplay')) c.play();
+    // A bad `src` or `preset` shows its message and stays (no other scene instead).
+    const ok = src ? await c.loadUrl(src) : this.#loadPreset(this.getAttribute('preset') || c.defaultPreset);
+    if (ok) {
+      this.#seekAttribute();
+      this.#autoplay();
+    }
     this.#resolveLoaded();
+  }
+
+  /** Loads preset `name`; a bad one shows its message in place of the scene. */
+  #loadPreset(name) {
+    return this.#controller.loadPreset(name);
+  }
+
+  /** `time`: the state at that time, simulated from t = 0. */
+  #seekAttribute() {
+    const c = this.#controller;
+    const attr = this.getAttribute('time');
+    if (attr === null || !c.pg) return;
+    const t = Number(attr);
+    if (attr.trim() === '' || !Number.isFinite(t))
+      c.showMessage(`time="${attr}": the time must be a number of seconds`);
+    else c.seek(t);
+  }
+
+  /** `controls`, `editable`, `readonly` and `loop`: what input may do, and the end of the run. */
+  #readModes() {
+    const c = this.#controller;
+    c.readonly = this.hasAttribute('readonly');
+    c.editable = !c.readonly && (this.hasAttribute('controls') || this.hasAttribute('editable'));
+    c.looping = this.hasAttribute('loop');
   }
 
   #readDisplayAttributes() {
@@ -193,6 +350,18 @@ export class DvfPlayground extends HTMLElement {
 
   step(n = 1) {
     return this.#controller?.step(n) ?? 0;
+  }
+
+  seek(t) {
+    return this.#controller?.seek(t) ?? 0;
+  }
+
+  get time() {
+    return this.#controller?.pg ? this.#controller.views.time : 0;
+  }
+
+  get playing() {
+    return Boolean(this.#controller?.pg && this.#controller.loop.playing);
   }
 
   worldToScreen(x, y) {
@@ -248,4 +417,8 @@ export class DvfPlayground extends HTMLElement {
   }
 }
 
-if (!customElements.get('dvf-playground')) customElements.define('dvf-playground', DvfPlayground);
+// Defined once, however often the module is imported (two copies of it included); nothing
+// where there is no DOM.
+if (globalThis.customElements && !customElements.get('dvf-playground')) {
+  customElements.define('dvf-playground', DvfPlayground);
+}

@@ -52,10 +52,13 @@ function freePort() {
   });
 }
 
-/** Starts python3's http.server on www/ and resolves with its base URL once it answers. */
-async function startServer() {
+/**
+ * Starts python3's http.server on folder `dir` (www/ unless told) and resolves with it and its
+ * base URL once it answers (the folder must hold an index.html).
+ */
+export async function startServer(dir = WWW) {
   const port = await freePort();
-  const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', WWW], {
+  const server = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', dir], {
     stdio: ['ignore', 'ignore', 'pipe'],
   });
   let stderr = '';

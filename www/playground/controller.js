@@ -29,8 +29,10 @@ import { Input } from './input.js';
 import { FrameLoop } from './loop.js';
 import { messageOf } from './message.js';
 import { Painter } from './paint.js';
-import { LiveViews, WASM_READY } from './wasm-views.js';
+import { LiveViews, wasmReady, wasmSourceName } from './wasm-views.js';
 
+/** `seek` asks the core for at most this many steps at once (its limit per call). */
+const MAX_STEPS_PER_CALL = 1_000_000;
 /** The Step button and the S key advance this much simulated time (s). */
 const STEP_TIME_S = 0.1;
 /** θ(0) of the integral curves until the element says otherwise (degrees): the paper's Fig. 1. */
@@ -77,6 +79,12 @@ export class Controller {
     this.fieldMode = 'arrows';
     this.theta0Deg = DEFAULT_THETA0_DEG;
     this.showSensing = false;
+    /** Drags and keys may edit the scene (the element's `controls`/`editable`, not `readonly`). */
+    this.editable = true;
+    /** Keys and the pointer do nothing but the toolbar's play, pause and reset (`readonly`). */
+    this.readonly = false;
+    /** Starts over at the end of the run (`loop`). */
+    this.looping = false;
     /** Bumped by every edit, load, reset and API step: the trail layer redraws from scratch. */
     this.generation = 0;
     this.connected = false;
@@ -93,15 +101,13 @@ export class Controller {
   /** Waits for the wasm module; false (and the message shown) when it cannot be loaded. */
   async ready() {
     try {
-      const { memory, limits, presets, defaultPreset } = await WASM_READY;
+      const { memory, limits, presets, defaultPreset } = await wasmReady();
       this.limits = limits;
       this.presetList = presets;
       this.defaultPreset = defaultPreset;
       this.views = new LiveViews(memory);
     } catch (e) {
-      this.showMessage(
-        `Could not load the simulator (pkg/dvf_bg.wasm): ${messageOf(e)}. Build it with "make build-wasm".`,
-      );
+      this.showMessage(wasmFailure(e));
       return false;
     }
     this.toolbar.fillMenus(this.presetList, this.limits.crowdMax);
@@ -243,7 +249,32 @@ export class Controller {
     this.pause();
     const taken = this.pg.step(n);
     this.#changed();
+    this.#clockMoved();
     return taken;
+  }
+
+  /**
+   * Shows the state at time `t` (s, clamped to [0, duration]): from t = 0, the whole way
+   * simulated, so that the state is the one a run reaches at that time; paused. Returns the
+   * time reached (a whole number of steps). Throws for a `t` that is not a number.
+   */
+  seek(t) {
+    if (typeof t !== 'number' || Number.isNaN(t))
+      throw new Error(`seek: the time must be a number of seconds, not ${t}`);
+    if (!this.pg) return 0;
+    this.pause();
+    this.pg.reset();
+    const target = Math.min(Math.max(t, 0), this.pg.duration);
+    // A whole number of steps; the tolerance keeps 6 / 0.01 from rounding down to 599 steps.
+    const steps = Math.floor(target / this.pg.dt + 1e-9);
+    for (let left = steps; left > 0; ) {
+      const taken = this.pg.step(Math.min(left, MAX_STEPS_PER_CALL));
+      if (taken === 0) break;
+      left -= taken;
+    }
+    this.#changed();
+    this.#clockMoved();
+    return this.views.time;
   }
 
   /** Advances STEP_TIME_S of simulated time (at least one step). */
@@ -255,7 +286,15 @@ export class Controller {
   advance(n) {
     const taken = this.pg.step(n);
     this.views.refresh();
+    if (taken > 0) this.#clockMoved();
     return taken;
+  }
+
+  /** Tells the page the clock moved: a `tick`, and `finished` when the run reached its end. */
+  #clockMoved() {
+    const time = this.views.time;
+    this.host.dispatchEvent(new CustomEvent('tick', { detail: { time } }));
+    if (this.pg.finished) this.host.dispatchEvent(new CustomEvent('finished', { detail: { time } }));
   }
 
   // ---- edits (see the top of the file) ------------------------------------------------------
@@ -497,4 +536,12 @@ export class Controller {
   requestDraw() {
     this.loop.requestDraw();
   }
+}
+
+/** The message for a module that could not be loaded, with what to do about it. */
+function wasmFailure(e) {
+  if (globalThis.location?.protocol === 'file:') {
+    return 'This page was opened from a file (file://), and browsers load the simulator (WebAssembly) only over HTTP. Serve the folder over HTTP, e.g. run "python3 -m http.server" in it and open http://localhost:8000/.';
+  }
+  return `Could not load the simulator (${wasmSourceName()}): ${messageOf(e)}. Serve dvf_bg.wasm with the package, or point the element at it with its wasm attribute.`;
 }

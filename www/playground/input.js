@@ -11,6 +11,8 @@ import { messageOf } from './message.js';
 const KEY_MOVE_FRACTION = 0.02;
 /** Keyboard: Q/E turn the selection by this angle (rad). */
 const KEY_TURN_RAD = Math.PI / 36;
+/** The keys of a figure that is not an editor: play, step, reset, fit and zoom. */
+const VIEW_KEYS = [' ', 's', 'S', 'r', 'R', 'f', 'F', '+', '=', '-', '_'];
 /** Zoom factor per wheel notch or +/- key. */
 const ZOOM_STEP = 1.2;
 
@@ -42,7 +44,8 @@ export class Input {
 
   pointerDown(e) {
     const c = this.c;
-    if (!c.pg || e.button > 0) return;
+    // A figure (no `controls`, or `readonly`) is not an editor: nothing to drag.
+    if (!c.pg || e.button > 0 || !c.editable) return;
     c.canvas.focus({ preventScroll: true });
     const { px, py } = this.local(e);
     this.pointers.set(e.pointerId, { px, py });
@@ -193,9 +196,11 @@ export class Input {
 
   keyDown(e) {
     const c = this.c;
-    if (!c.pg) return;
+    if (!c.pg || c.readonly) return;
     const mod = e.ctrlKey || e.metaKey;
     const key = e.key;
+    // A figure that is not an editor takes the clock's and the view's keys only.
+    if (!c.editable && !VIEW_KEYS.includes(key)) return;
     const centre = () => [c.canvas.clientWidth / 2, c.canvas.clientHeight / 2];
     let handled = true;
     if (mod && (key === 'z' || key === 'Z')) {
@@ -225,7 +230,9 @@ export class Input {
       nudgeSelection(c, 0, 0, key.toLowerCase() === 'q' ? KEY_TURN_RAD : -KEY_TURN_RAD);
     } else handled = false;
     if (handled) {
+      // A key the figure used is its own: the host page's shortcuts never see it.
       e.preventDefault();
+      e.stopPropagation();
       c.toolbar.update();
       c.requestDraw();
     }

@@ -124,8 +124,12 @@ export class FrameLoop {
       }
     }
     if (c.pg.finished) {
-      this.playing = false;
-      c.toolbar.update();
+      // `loop`: start over (the clock keeps playing from t = 0).
+      if (c.looping) c.reset();
+      else {
+        this.playing = false;
+        c.toolbar.update();
+      }
     }
   }
 

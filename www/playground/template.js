@@ -24,7 +24,7 @@ export const TEMPLATE = `
       <button type="button" data-id="add-obstacle" title="Add an obstacle at the centre of the view (O)">+ Obstacle</button>
       <button type="button" data-id="delete" title="Delete the selected robot or obstacle (Delete)">Delete</button>
     </span>
-    <span class="group">
+    <span class="group display">
       <label>Field <select data-id="field" aria-label="Field display">
         <option value="arrows">arrows Γ</option><option value="curves">integral curves</option><option value="none">off</option>
       </select></label>
@@ -55,7 +55,7 @@ export const TEMPLATE = `
         <p class="robot-info" data-id="robot-info"></p>
         <canvas data-id="plots" aria-label="Minimum pair distance and the selected robot's errors over time"></canvas>
       </section>
-      <section>
+      <section class="params-section">
         <h3>Parameters</h3>
         <form data-id="params" class="params"></form>
       </section>

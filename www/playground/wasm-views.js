@@ -7,7 +7,7 @@ import init, { defaultPreset, playgroundLimits, presets } from '../pkg/dvf.js';
 
 // The records of the flat arrays come from the module (`playgroundLimits()`, src/wasm/mod.rs),
 // set once it is initialised: ES module bindings are live, so every importer sees them. Nothing
-// reads them before WASM_READY resolves (drawing starts after the first load).
+// reads them before wasmReady() resolves (drawing starts after the first load).
 /** Values per pose in `poses`, `trails` and `predicted`: x, y, θ (m, m, rad). */
 export let POSE_STRIDE = 0;
 /** Values per robot in `status`, at the offsets of STATUS. */
@@ -35,23 +35,57 @@ export let SAMPLE_STRIDE = 0;
  * @typedef {{name: string, summary: string}} PresetInfo
  */
 
+/** The module beside the bindings, relative to this file. */
+const DEFAULT_WASM_PATH = '../pkg/dvf_bg.wasm';
 /**
- * The module, initialised once per page: its memory, limits, presets and default preset.
- * @type {Promise<{memory: WebAssembly.Memory, limits: Limits, presets: PresetInfo[], defaultPreset: string}>}
+ * Where the module comes from: undefined for `pkg/dvf_bg.wasm` beside the bindings, or a URL
+ * (string or URL), or the module's bytes (the single-file build sets them).
+ * @type {string | URL | BufferSource | undefined}
  */
-export const WASM_READY = init().then((wasm) => {
-  /** @type {Limits} */
-  const limits = playgroundLimits();
-  POSE_STRIDE = limits.poseStride;
-  STATUS_STRIDE = limits.statusStride;
-  FIELD_STRIDE = limits.fieldStride;
-  CURVE_POINT_STRIDE = limits.curveStride;
-  SAMPLE_STRIDE = limits.sampleStride;
-  limits.statusFields.forEach((name, offset) => {
-    STATUS[name] = offset;
+let wasmSource;
+/** @type {Promise<{memory: WebAssembly.Memory, limits: Limits, presets: PresetInfo[], defaultPreset: string}> | null} */
+let ready = null;
+
+/**
+ * Points the page at the module's `source` (a URL or the bytes) for the first load; false
+ * (and nothing changed) once loading has begun, since the module is loaded once per page.
+ * @param {string | URL | BufferSource | undefined} source
+ */
+export function setWasmSource(source) {
+  if (ready) return false;
+  wasmSource = source;
+  return true;
+}
+
+/** The module's URL as the page asks for it, for messages. */
+export function wasmSourceName() {
+  // Not `new URL('…literal…', import.meta.url)`: a bundler would copy (or inline) the module
+  // a second time for a message.
+  if (wasmSource === undefined) return new URL(DEFAULT_WASM_PATH, import.meta.url).href;
+  return typeof wasmSource === 'string' || wasmSource instanceof URL ? String(wasmSource) : 'the inlined module';
+}
+
+/**
+ * The module, initialised once per page on first call (never at import: a page, or a server
+ * rendering one, that imports the element loads nothing until an element asks): its memory,
+ * limits, presets and default preset.
+ */
+export function wasmReady() {
+  ready ??= init(wasmSource === undefined ? undefined : { module_or_path: wasmSource }).then((wasm) => {
+    /** @type {Limits} */
+    const limits = playgroundLimits();
+    POSE_STRIDE = limits.poseStride;
+    STATUS_STRIDE = limits.statusStride;
+    FIELD_STRIDE = limits.fieldStride;
+    CURVE_POINT_STRIDE = limits.curveStride;
+    SAMPLE_STRIDE = limits.sampleStride;
+    limits.statusFields.forEach((name, offset) => {
+      STATUS[name] = offset;
+    });
+    return { memory: wasm.memory, limits, presets: presets(), defaultPreset: defaultPreset() };
   });
-  return { memory: wasm.memory, limits, presets: presets(), defaultPreset: defaultPreset() };
-});
+  return ready;
+}
 
 /**
  * One buffer of `Playground.layout()`: `length` elements at byte `pointer`, `stride` per item.
