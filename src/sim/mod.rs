@@ -7,7 +7,9 @@
 //! ([`crate::unicycle::integrate`]). A digital controller does exactly this, so there is no
 //! integration error to tune away; RK4 would instead re-evaluate the controller inside the
 //! step, which no real robot does. The same input gives the same bits on the same platform:
-//! there is no randomness, no parallelism and no iteration over hashed containers.
+//! there is no randomness and no iteration over hashed containers, and the one parallelism
+//! (a large crowd's evaluations on rayon's threads, natively) puts each robot's evaluation of
+//! the same snapshot in its own slot.
 //!
 //! Over 500 lines with its tests: the loop, the robot's state and the two in-place edits
 //! (`place_robot`, `place_obstacle`) share the loop's private state (the neighbour lists, the
