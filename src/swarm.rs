@@ -80,7 +80,7 @@ pub struct Approach {
 ///
 /// [`Avoidance::Exit`]: one neighbour, the nearest of those that the robot's motion leads
 /// towards (the case `θ_r < π/2` of eq. `eq_ob_avoid_VF` applied to each neighbour) that does
-/// not stand at rest in a parked formation ([`in_a_parked_formation`]). A robot
+/// not stand at rest in a parked formation (`in_a_parked_formation`). A robot
 /// moving away from a neighbour cannot collide with it by its own motion, and one that ignored
 /// the rule would circle the virtual obstacle forever (docs/notes-on-the-paper.md §5). Its
 /// [`Cluster::clearance`] lets a robot settle at a goal next to a parked neighbour.
