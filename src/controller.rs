@@ -77,13 +77,22 @@ pub fn atan_ratio(y: f64, x: f64) -> f64 {
     }
 }
 
-/// The smooth fade `n²/(n² + g²)` of the alignment term for a field of magnitude `n`
-/// (docs/notes-on-the-paper.md §3). 1 far from the goal, → 0 as the field vanishes.
+/// The fade `n²/(n² + g²)` of the alignment term for a field of magnitude `n ≥ g`, and 0
+/// below `g` (docs/notes-on-the-paper.md §3). 1 far from the goal, 0 once the field is
+/// smaller than `g`: there the robot only turns, `ω = −k_ω θ̃`, to its goal heading.
+///
+/// The step from ½ to 0 at `n = g` is deliberate. A fade that went smoothly to 0 would pass
+/// through `2k_ω|θ̃|/(k_a·π)` for every heading error, and where it does a robot whose field is
+/// perpendicular to its heading (so `v = 0`) balances `k_ω θ̃` against `k_a·fade·π/2`: it sits
+/// on its goal position with its heading off (seen in formations, where a robot reaches its
+/// slot after circling others with its heading error unattended: 0.05–0.09 rad off for
+/// minutes). With the step no such balance exists while `k_a > 4k_ω` (the defaults: 10 and 1).
+/// `n = g` lies far inside `tol_position`, where the field is a tiny correction.
 #[inline]
 #[must_use]
 pub fn alignment_fade(n: f64, g: f64) -> f64 {
     let n2 = n * n;
-    if n2 == 0.0 {
+    if n2 == 0.0 || n < g {
         0.0
     } else {
         n2 / (n2 + g * g)
@@ -138,7 +147,7 @@ pub fn evaluate<'a, I>(
     err: Pose,
     speed: f64,
     obstacles: I,
-    neighbours: impl IntoIterator<Item = Neighbour>,
+    neighbours: impl IntoIterator<Item = Neighbour, IntoIter: Clone>,
 ) -> Evaluation
 where
     I: IntoIterator<Item = &'a Obstacle>,
@@ -180,7 +189,12 @@ where
             let s = transition(c.distance, params.avoid_radius, eps);
             // Let go of a neighbour whose safe disc is farther than the goal (Exit only).
             let go = c.clearance.map_or(0.0, |cl| goal_first(cl, to_goal, eps));
-            let go = 1.0 - (1.0 - go) * (1.0 - c.aside);
+            // A robot at rest on its goal (within r_ij, let go smoothly by 2·r_ij) leaves the
+            // avoidance of a moving neighbour to that neighbour (`Cluster::yields`): the point
+            // they would circle lies on itself, and circling it makes the parked robot's ω
+            // jump by the tangent's whole angle while its vanishing goal field is outweighed.
+            let parked = 1.0 - transition(to_goal, params.safe_radius, params.safe_radius);
+            let go = 1.0 - (1.0 - go) * (1.0 - c.aside) * (1.0 - c.yields * parked);
             let side = c.at_rest.then_some(gp);
             (c.center, 1.0 - (1.0 - s) * (1.0 - go), side)
         })
@@ -244,6 +258,8 @@ mod tests {
         assert_eq!(alignment_fade(0.0, 1e-3), 0.0);
         assert!(alignment_fade(1.0, 1e-3) > 1.0 - 1e-6);
         assert!((alignment_fade(1e-3, 1e-3) - 0.5).abs() < 1e-15);
+        // Below g the robot only turns.
+        assert_eq!(alignment_fade(0.999e-3, 1e-3), 0.0);
     }
 
     /// The fully actuated loop (eq. `eq_fully_controller`) makes the Lyapunov function

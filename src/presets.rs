@@ -55,6 +55,11 @@ pub const PRESETS: &[Preset] = &[
         summary: "Example 3, scenario 2: six robots swap antipodally on a circle, orientations kept, T = 15 s",
         build: example3_circle,
     },
+    Preset {
+        name: "formation-gap-grid",
+        summary: "Not in the paper: twelve robots through a gap into a 4 × 3 grid of slots 5 r_ij apart, T = 90 s",
+        build: formation_gap_grid,
+    },
 ];
 
 /// The preset shown when nothing else is asked for.
@@ -152,6 +157,40 @@ fn table2() -> Scenario {
 /// Obstacle centres of the Table II preset: points on each robot's obstacle-free path
 /// (see the test `table2_obstacles_block_the_free_paths`).
 pub const TABLE2_OBSTACLES: [[f64; 2]; 3] = [[-9.2, 14.0], [-18.0, 13.0], [-19.6, 4.1]];
+
+/// Twelve robots in a column at `x = −30` (`3·r_ij` apart, headings fanned out) drive through
+/// the gap between two obstacles (`r_o = 5`, `R_o = 7`, centres 18 apart at `x = 0`) into a
+/// grid of four columns and three rows of slots `5·r_ij` apart, parked facing east and west
+/// by turns (Example 4's task with a grid of parking slots). The farthest slots lie behind
+/// the nearest ones.
+fn formation_gap_grid() -> Scenario {
+    let robots = (0..12)
+        .map(|k| {
+            let (row, col) = ((k % 3) as f64, (3 - k / 3) as f64);
+            let y = 3.0 * k as f64 - 16.5;
+            let facing = if k % 2 == 0 { 0.0 } else { PI };
+            robot(
+                [-30.0, y, 0.25 * y / 16.5 * PI],
+                [20.0 + 5.0 * col, 5.0 * (row - 1.0), facing],
+            )
+        })
+        .collect();
+    let obstacle = |y: f64| Obstacle {
+        center: DVec2::new(0.0, y),
+        radius: 5.0,
+        influence: 7.0,
+    };
+    Scenario {
+        name: "Formation: through a gap into a grid".into(),
+        bounds: None,
+        duration: 90.0,
+        dt: 0.01,
+        params: Params::default(),
+        independent: false,
+        robots,
+        obstacles: vec![obstacle(-9.0), obstacle(9.0)],
+    }
+}
 
 /// Example 3, scenario 1: five robots in a column at `x = −20` heading east swap to a column
 /// at `x = 20` in reverse order, keeping their heading: every path crosses the others near

@@ -45,6 +45,12 @@ pub struct Cluster {
     /// tenth as fast), so the robot goes round it on the side of its own field, as round an
     /// obstacle, rather than by the turn-left rule meant for two robots that both give way.
     pub at_rest: bool,
+    /// [`Avoidance::Exit`]: how far the robot leaves the avoidance to the neighbour (0: it
+    /// takes its part, 1: none), from its share of the gap `w_i/(w_i + w_j)`
+    /// ([`virtual_obstacle_between`]): a robot at rest next to one that moves has no part in
+    /// circling the point they share, which lies on itself, and the controller lets the
+    /// neighbour go by as much. 0 for the paper.
+    pub yields: f64,
 }
 
 /// A neighbour moving at most this fraction of the robot's speed is at rest for
@@ -73,7 +79,8 @@ pub struct Approach {
 /// [`Avoidance::Paper`]: the centroid of the robot and all of them (eq. `eq_tilde_p_o`).
 ///
 /// [`Avoidance::Exit`]: one neighbour, the nearest of those that the robot's motion leads
-/// towards: the case `θ_r < π/2` of eq. `eq_ob_avoid_VF` applied to each neighbour. A robot
+/// towards (the case `θ_r < π/2` of eq. `eq_ob_avoid_VF` applied to each neighbour) that does
+/// not stand at rest in a parked formation (`in_a_parked_formation`). A robot
 /// moving away from a neighbour cannot collide with it by its own motion, and one that ignored
 /// the rule would circle the virtual obstacle forever (docs/notes-on-the-paper.md §5). Its
 /// [`Cluster::clearance`] lets a robot settle at a goal next to a parked neighbour.
@@ -88,27 +95,31 @@ pub struct Approach {
 #[must_use]
 pub fn cluster(
     me: Approach,
-    neighbours: impl IntoIterator<Item = Neighbour>,
+    neighbours: impl IntoIterator<Item = Neighbour, IntoIter: Clone>,
     range: f64,
     safe: f64,
     avoidance: Avoidance,
 ) -> Option<Cluster> {
     let p_i = me.position;
-    let in_range = neighbours
-        .into_iter()
-        .filter(move |n| n.position.distance(p_i) <= range);
-    let (center, clearance, at_rest, aside) = match avoidance {
+    let all = neighbours.into_iter();
+    let sensed = all.clone();
+    let in_range = all.filter(move |n| n.position.distance(p_i) <= range);
+    let (center, clearance, at_rest, aside, yields) = match avoidance {
         Avoidance::Paper => (
             virtual_obstacle(p_i, in_range.map(|n| n.position))?,
             None,
             false,
+            0.0,
             0.0,
         ),
         Avoidance::Exit => {
             let nearest = in_range
                 .filter(|n| {
                     let to = n.position - p_i;
-                    me.motion.dot(to) > 0.0 && me.field.dot(to) > 0.0 && aside(me, *n, safe) < 1.0
+                    me.motion.dot(to) > 0.0
+                        && me.field.dot(to) > 0.0
+                        && aside(me, *n, safe) < 1.0
+                        && !in_a_parked_formation(me, *n, sensed.clone(), range)
                 })
                 .min_by(|a, b| {
                     a.position
@@ -120,6 +131,7 @@ pub fn cluster(
                 Some(nearest.position.distance(p_i) - safe),
                 self::at_rest(me, nearest),
                 self::aside(me, nearest, safe),
+                self::yields(me.speed, nearest.speed),
             )
         }
     };
@@ -129,6 +141,7 @@ pub fn cluster(
         clearance,
         at_rest,
         aside,
+        yields,
     })
 }
 
@@ -136,6 +149,49 @@ pub fn cluster(
 /// straight way to the goal: one beside the way is no obstacle, and circling it would keep a
 /// robot from a goal that lies between parked neighbours (a slot in a crowded formation).
 pub const BLOCKING: f64 = 1.5;
+
+/// How far from the robot [`cluster`] looks: its `range`, and with [`Avoidance::Exit`] the
+/// range again around each neighbour within it (`in_a_parked_formation` looks for another
+/// parked robot near the neighbour). A sensed robot farther than this changes no cluster.
+#[must_use]
+pub fn cluster_reach(range: f64, avoidance: Avoidance) -> f64 {
+    match avoidance {
+        Avoidance::Paper => range,
+        Avoidance::Exit => 2.0 * range,
+    }
+}
+
+/// Whether `n` is at rest and has another neighbour at rest within `range` of it (among the
+/// robot's `sensed` neighbours): a robot of a parked formation. Such a neighbour is not
+/// circled: circling one robot of a grid of parked robots leads into the next, and a robot
+/// between two of them flips from one to the other (each circled on its own side) and stays
+/// there. The robot follows its field past them instead, and the safety barrier, with its
+/// turn to the left where the field leads into it, takes it round one that stands in the way.
+/// A lone parked robot is still circled.
+fn in_a_parked_formation(
+    me: Approach,
+    n: Neighbour,
+    sensed: impl Iterator<Item = Neighbour>,
+    range: f64,
+) -> bool {
+    at_rest(me, n)
+        && sensed.into_iter().any(|m| {
+            m.position != n.position
+                && at_rest(me, m)
+                && m.position.distance_squared(n.position) <= range * range
+        })
+}
+
+/// How far a robot moving at `speed` leaves the avoidance of a neighbour moving at `other`
+/// to that neighbour ([`Cluster::yields`]): 1 when its share of the gap is 0, falling
+/// smoothly to 0 at the share of a robot [`AT_REST_RATIO`] as fast as the neighbour, so
+/// that robots that both move keep the paper's avoidance.
+fn yields(speed: f64, other: f64) -> f64 {
+    let w_i = speed.abs() + SPEED_FLOOR;
+    let w_j = other.abs() + SPEED_FLOOR;
+    let share = w_i / (w_i + w_j);
+    1.0 - crate::obstacle::transition(share, 0.0, AT_REST_RATIO / (1.0 + AT_REST_RATIO))
+}
 
 /// Whether `n` is at rest next to the robot `me` (see [`Cluster::at_rest`]).
 fn at_rest(me: Approach, n: Neighbour) -> bool {
@@ -280,17 +336,22 @@ mod tests {
         assert_eq!(c.clearance, None);
     }
 
-    /// A neighbour at rest beside the straight way to the goal is let go (a slot between
-    /// parked robots can be reached); one in the way is not; a moving one never is.
-    #[test]
-    fn a_parked_neighbour_aside_of_the_way_is_let_go() {
-        let me = Approach {
+    /// A robot at the origin heading east at 2 m/s to a goal 10 m ahead.
+    fn eastbound() -> Approach {
+        Approach {
             position: DVec2::ZERO,
             motion: DVec2::X,
             field: DVec2::X,
             goal: DVec2::new(10.0, 0.0),
             speed: 2.0,
-        };
+        }
+    }
+
+    /// A neighbour at rest beside the straight way to the goal is let go (a slot between
+    /// parked robots can be reached); one in the way is not; a moving one never is.
+    #[test]
+    fn a_parked_neighbour_aside_of_the_way_is_let_go() {
+        let me = eastbound();
         let parked = |y: f64| Neighbour {
             position: DVec2::new(5.0, y),
             speed: 0.0,
@@ -326,6 +387,33 @@ mod tests {
             2f64.sqrt(),
             0.0
         );
+    }
+
+    /// A parked neighbour in the way is circled when it stands alone and passed when another
+    /// parked robot stands within the range of it (a parked formation); a moving one is always
+    /// circled. A robot at rest leaves a moving neighbour to it; robots moving alike do not.
+    #[test]
+    fn parked_formations_are_passed_and_parked_robots_yield() {
+        let me = eastbound();
+        let parked = |x: f64, y: f64| Neighbour {
+            position: DVec2::new(x, y),
+            speed: 0.0,
+        };
+        let c = |ns: &[Neighbour]| cluster(me, ns.iter().copied(), 8.0, 2.0, Avoidance::Exit);
+        assert!(c(&[parked(4.0, 0.5)]).is_some());
+        assert!(c(&[parked(4.0, 0.5), parked(4.0, 5.5)]).is_none());
+        // Another parked robot beyond the range of it: alone again.
+        assert!(c(&[parked(4.0, 0.5), parked(4.0, 9.0)]).is_some());
+        let moving = Neighbour {
+            speed: 2.0,
+            ..parked(4.0, 0.5)
+        };
+        assert!(c(&[moving, parked(4.0, 5.5)]).is_some());
+        // Yielding: 1 at rest next to a moving robot (up to the speed floor), 0 alike.
+        assert!(yields(0.0, 2.0) > 0.999);
+        assert_eq!(yields(2.0, 2.0), 0.0);
+        assert_eq!(yields(0.0, 0.0), 0.0);
+        assert_eq!(yields(0.3, 2.0), 0.0);
     }
 
     /// A neighbour at rest is circled about itself, one moving alike about the midpoint.

@@ -19,6 +19,7 @@ const PRESETS: &[&str] = &[
     "table2-obstacles",
     "example3-line-swap",
     "example3-circle-swap",
+    "formation-gap-grid",
     "crowd-1",
     "crowd-2",
     "crowd-7",

@@ -39,7 +39,7 @@ use crate::params::Params;
 use crate::safety;
 use crate::scenario::Scenario;
 use crate::se2::{continue_branch, wrap_angle, Pose};
-use crate::swarm::{pair_range, Neighbour};
+use crate::swarm::{cluster_reach, pair_range, Neighbour};
 use crate::unicycle::integrate_along;
 use crate::Command;
 use glam::DVec2;
@@ -255,19 +255,20 @@ impl Simulation {
     }
 
     /// The reach of the neighbour lists: the sensed robots that can change a command, and the
-    /// collision distance `2·r_ij`. A sensed robot changes a command only within the avoidance
-    /// range `2(R_c + ε)` (the virtual obstacle, [`crate::swarm::cluster`]) or within the
-    /// barrier's [`safety::neighbour_reach`] at the fastest speed `v_max` allows; beyond both,
-    /// it is sensed and ignored, so the lists leave it out with the same bits. In a crowd
-    /// (`v_max` = 20 m/s) that is 10 m instead of `R_s` = 20: a quarter of the area, which is
-    /// what a jam's step costs. Without `v_max` and with a barrier, the sensing radius.
+    /// collision distance `2·r_ij`. A sensed robot changes a command only within the reach of
+    /// the virtual obstacle's choice ([`crate::swarm::cluster_reach`]: the avoidance range
+    /// `2(R_c + ε)`, twice that where a parked formation is looked for) or within the barrier's
+    /// [`safety::neighbour_reach`] at the fastest speed `v_max` allows; beyond both, it is
+    /// sensed and ignored, so the lists leave it out with the same bits. In a crowd with the
+    /// default avoidance that is 16 m instead of `R_s` = 20 (10 m with the paper's). Without
+    /// `v_max` and with a barrier, the sensing radius.
     // Not inlined: four callers, one copy in the wasm module.
     #[inline(never)]
     fn reach(&self) -> f64 {
         let p = &self.params;
-        let avoidance = pair_range(p.avoid_radius, p.transition_width)
-            * (1.0 + safety::REACH_MARGIN)
-            + safety::REACH_MARGIN;
+        let range = pair_range(p.avoid_radius, p.transition_width);
+        let avoidance =
+            cluster_reach(range, p.avoidance) * (1.0 + safety::REACH_MARGIN) + safety::REACH_MARGIN;
         let barrier = match (p.barrier_rate, p.v_max) {
             (None, _) => 0.0,
             (Some(_), Some(v)) => safety::neighbour_reach(p, v),
