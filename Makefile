@@ -48,6 +48,7 @@ test-browser: tools
 test-e2e: build-wasm
 	node tests/e2e/smoke.mjs
 	node tests/e2e/embed.mjs
+	node tests/e2e/instrument.mjs
 
 test: tools lint test-native test-node test-browser test-e2e
 

@@ -245,8 +245,11 @@ export declare class DvfPlayground extends HTMLElement {
   step(n?: number): number;
   /** Page coordinates (CSS px, like `pageX`/`pageY`) of world point (x, y) in metres. */
   worldToScreen(x: number, y: number): { x: number; y: number };
-  /** Shows `text` (as text, never HTML) in the message bar; an empty text hides it. */
-  showMessage(text: string): void;
+  /**
+   * Shows `text` (as text, never HTML) over the canvas until the user acts; an empty text hides
+   * it. `info`: a notice rather than an error; `actions`: buttons beside it, `[label, run]`.
+   */
+  showMessage(text: string, options?: { info?: boolean; actions?: [string, () => void][] }): void;
   /** Resolves once the first scene is shown. */
   readonly loaded: Promise<void>;
 
@@ -274,6 +277,8 @@ export declare class DvfPlayground extends HTMLElement {
   readonly fieldMode: FieldMode | null;
   /** The inspected robot. */
   focusRobot: number | null;
+  /** The two plots' geometry as last drawn: the time axis (CSS px), the "now" line, the ticks. */
+  readonly plotGeometry: PlotGeometry[] | null;
 
   addEventListener<K extends keyof DvfPlaygroundEventMap>(
     type: K,
@@ -297,4 +302,13 @@ declare global {
   interface HTMLElementTagNameMap {
     'dvf-playground': DvfPlayground;
   }
+}
+
+/** One plot's geometry (panels/plots.js), in the plots canvas's CSS px. */
+export interface PlotGeometry {
+  x0: number;
+  x1: number;
+  nowX: number;
+  timeTicks: number[];
+  valueTicks: number[];
 }

@@ -12,14 +12,17 @@
 //
 // Attributes (read at start; a change applies at once):
 //   preset    a preset name (default: the crate's default preset); `crowd-N` included
-//   src       URL of a scenario JSON file; takes precedence over `preset`. A bad file shows the
-//             message and falls back to the preset
+//   src       URL of a scenario JSON file; takes precedence over `preset`. A bad file (missing,
+//             an HTML page, an invalid scenario) shows the preset instead, with a message that
+//             says why and stays until the user acts (so does an unknown preset's)
 //   controls  present: the full toolbar and side panels; absent: play, step, reset and the
 //             field menu only, and the wheel zooms only once the canvas is focused (or with Ctrl)
 //   autoplay  present: start playing once loaded (read once)
 //   field     `arrows` (default), `curves` or `none`
 //   theta0    θ(0) of the integral curves, in degrees (default 90)
 //   sensing   present: draw the sensing circles R_s
+//   theme     `light` or `dark` forces a theme; absent: the system's (prefers-color-scheme).
+//             The colours are custom properties `--dvf-…` (playground.css lists them)
 //
 // Methods:
 //   load(scenario)        a scenario object or JSON text as a new document (t = 0, view fitted,
@@ -36,8 +39,14 @@
 //                         for an n that is not a whole number from 0 to 10⁶
 //   worldToScreen(x, y)   page coordinates {x, y} (CSS px, like pageX/pageY) of world point
 //                         (x, y) in metres, for overlays
-//   showMessage(text)     shows text (as text, never HTML) in the element's message bar; an
-//                         empty text hides it (www/main.js reports bad links with it)
+//   showMessage(text, options)
+//                         shows text (as text, never HTML) over the canvas until the user acts
+//                         (an edit, a load, its × button); an empty text hides it. Options:
+//                         `info` (a notice, not an error), `actions` (buttons, [label, run]
+//                         pairs). www/main.js reports bad links and links too long with it
+//
+// Keys: handled anywhere inside the element (not while typing in a field); a key the element
+// handles stops there (stopPropagation and preventDefault): it never reaches the page.
 //
 // Properties:
 //   loaded                a promise that resolves once the first scene is shown
@@ -65,6 +74,7 @@
 //   stepMs                the mean wall time of one step (ms), for the step budget
 //   fieldMode             the field overlay shown: `arrows`, `curves` or `none`
 //   focusRobot            the inspected robot (its field, plots and line); settable
+//   plotGeometry          the two plots as last drawn: time axis ends, "now" line, ticks
 //   shadowRoot            open: the parts of the template (playground/template.js) are found by
 //                         their `data-id` (`canvas`, `message`, `clock`, `title`, `preset`,
 //                         `crowd-n`, `undo`, `export-json`, `import-file`, …), the parameters by
@@ -81,7 +91,7 @@ import { TEMPLATE } from './playground/template.js';
  */
 export class DvfPlayground extends HTMLElement {
   static get observedAttributes() {
-    return ['preset', 'src', 'field', 'theta0', 'sensing'];
+    return ['preset', 'src', 'field', 'theta0', 'sensing', 'theme'];
   }
 
   /** @type {Controller | null} created when the element is first connected */
@@ -125,7 +135,8 @@ export class DvfPlayground extends HTMLElement {
   attributeChangedCallback(name, oldValue, value) {
     const c = this.#controller;
     if (!c?.pg || oldValue === value) return;
-    if (name === 'preset' && value) c.loadPreset(value);
+    if (name === 'theme') c.readTheme();
+    else if (name === 'preset' && value) c.loadPreset(value);
     else if (name === 'src' && value) c.loadUrl(value);
     else this.#readDisplayAttributes();
     c.requestDraw();
@@ -137,10 +148,16 @@ export class DvfPlayground extends HTMLElement {
     if (!(await c.ready())) return;
     this.#readDisplayAttributes();
     const src = this.getAttribute('src');
-    let ok = false;
-    if (src) ok = await c.loadUrl(src);
-    if (!ok) ok = c.loadPreset(this.getAttribute('preset') || c.defaultPreset, { quiet: Boolean(src) });
-    if (!ok) c.loadPreset(c.defaultPreset, { quiet: true });
+    const preset = this.getAttribute('preset') || c.defaultPreset;
+    let ok = src ? await c.loadUrl(src) : c.loadPreset(preset);
+    if (!ok) {
+      // The message stays, saying what is shown instead, until the user acts.
+      const why = c.$('message-text').textContent;
+      const fallback = src && c.loadPreset(preset, { quiet: true }) ? preset : c.defaultPreset;
+      if (fallback === c.defaultPreset) c.loadPreset(fallback, { quiet: true });
+      c.showMessage(`${why}\nShowing the preset ${fallback} instead.`);
+      ok = true;
+    }
     if (this.hasAttribute('autoplay')) c.play();
     this.#resolveLoaded();
   }
@@ -199,8 +216,8 @@ export class DvfPlayground extends HTMLElement {
     return this.#connected().worldToScreen(x, y);
   }
 
-  showMessage(text) {
-    this.#controller?.showMessage(text);
+  showMessage(text, options) {
+    this.#controller?.showMessage(text, options);
   }
 
   // ---- diagnostics --------------------------------------------------------------------------
@@ -239,6 +256,10 @@ export class DvfPlayground extends HTMLElement {
 
   get focusRobot() {
     return this.#controller?.focusRobot ?? null;
+  }
+
+  get plotGeometry() {
+    return this.#controller?.pg ? this.#controller.painter.plots.geometry : null;
   }
 
   set focusRobot(i) {

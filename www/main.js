@@ -2,12 +2,14 @@
 // address's fragment (#s=<scenario JSON>, or #<preset name>) so that a copied link reopens it.
 
 import './dvf-playground.js';
-import { fragmentFor, MAX_SCENARIO_BYTES, parseFragment } from './io.js';
+import { downloadScenarioJson, FRAGMENT_PREFIX, fragmentFor, MAX_LINK_CHARS, parseFragment } from './io.js';
 import { messageOf } from './playground/message.js';
 
 const playground = /** @type {import('./dvf-playground.js').DvfPlayground} */ (document.getElementById('playground'));
 /** The fragment this page last wrote, so that its own hashchange is not read back. */
 let written = location.hash;
+/** Whether the message says that the scene is too big for a link. */
+let tooBigShown = false;
 
 /** Shows the scene the fragment asks for; a bad fragment shows why and keeps the scene. */
 function openFragment(hash) {
@@ -17,6 +19,7 @@ function openFragment(hash) {
     if (wanted.kind === 'scenario') playground.load(wanted.text);
     else if (wanted.kind === 'preset' && !playground.loadPreset(wanted.name)) return;
     if (wanted.kind !== 'none') playground.showMessage('');
+    tooBigShown = false;
   } catch (e) {
     playground.showMessage(`This link does not hold a scenario the playground can open. ${messageOf(e)}`);
   }
@@ -28,10 +31,26 @@ async function main() {
   playground.addEventListener('change', () => {
     // A preset by its name (a crowd of 10,000 is 600 KB of JSON); an edited scene as JSON, or
     // no fragment at all when that is longer than a link may be (Scenario JSON saves it).
+    // A scene too big for a link: the address holds none (a stale one would open another
+    // scene) and the message over the canvas says so, offering the file instead.
+    // The plain JSON first: its length is the link's within a few characters, and a crowd's
+    // exact digits (fragmentFor) take longer to write than a frame.
     const preset = playground.presetName();
-    const fragment = preset ? `#${encodeURIComponent(preset)}` : fragmentFor(playground.scenario());
-    written = fragment.length <= MAX_SCENARIO_BYTES ? fragment : '';
+    const scenario = preset ? null : playground.scenario();
+    const plain = scenario ? FRAGMENT_PREFIX.length + encodeURIComponent(JSON.stringify(scenario)).length : 0;
+    const fragment = preset ? `#${encodeURIComponent(preset)}` : plain <= MAX_LINK_CHARS ? fragmentFor(scenario) : null;
+    written = fragment && fragment.length <= MAX_LINK_CHARS ? fragment : '';
     history.replaceState(null, '', written || `${location.pathname}${location.search}`);
+    if (!written) {
+      playground.showMessage(
+        `This scene is too big for a link (${(fragment?.length ?? plain).toLocaleString('en')} characters; a link holds at most ${MAX_LINK_CHARS.toLocaleString('en')}), so the address no longer holds it. Save it with Scenario JSON; Import… opens the file again.`,
+        { info: true, actions: [['Scenario JSON', () => downloadScenarioJson(playground.scenario())]] },
+      );
+      tooBigShown = true;
+    } else if (tooBigShown) {
+      playground.showMessage('');
+      tooBigShown = false;
+    }
   });
   window.addEventListener('hashchange', () => {
     if (location.hash !== written) openFragment(location.hash);

@@ -3,7 +3,16 @@
 // fit, and the exports and import. Without the `controls` attribute the stylesheet hides all
 // but play, step, reset and the field menu.
 
-import { downloadCanvasPng, downloadScenarioJson, downloadTrajectoriesCsv, readScenarioFile } from '../io.js';
+import {
+  csvSize,
+  downloadCanvasPng,
+  downloadCsv,
+  downloadScenarioJson,
+  formatBytes,
+  MAX_CSV_BYTES,
+  readScenarioFile,
+  trajectoriesCsv,
+} from '../io.js';
 import { addObstacleInView, addRobotInView, deleteSelection } from '../playground/actions.js';
 import { DEFAULT_SPEED, SPEEDS } from '../playground/loop.js';
 import { messageOf } from '../playground/message.js';
@@ -15,6 +24,17 @@ const DEFAULT_CROWD = 1000;
 const CROWD_PREFIX = 'crowd-';
 /** The menu's entry for a crowd. */
 const CROWD_OPTION = 'crowd';
+
+/**
+ * A preset's name in the menu: its summary up to the first colon ("Example 4", "Example 3,
+ * scenario 2") and the rest of the slug after the example's number ("obstacle formation").
+ * @param {{name: string, summary: string}} p
+ */
+export function presetLabel({ name, summary }) {
+  const head = summary.split(':')[0].trim();
+  const words = name.replace(/^[a-z]+\d+-?/, '').replace(/-/g, ' ');
+  return words ? `${head}: ${words}` : head;
+}
 
 export class Toolbar {
   /** @param {import('../playground/controller.js').Controller} controller */
@@ -35,6 +55,8 @@ export class Toolbar {
     $('preset').addEventListener('change', () => {
       if ($('preset').value === CROWD_OPTION) this.loadCrowd();
       else c.loadPreset($('preset').value, { edit: true });
+      // The keys act on the new scene at once (the menu would take letters as a search).
+      if ($('preset').value !== CROWD_OPTION) c.canvas.focus({ preventScroll: true });
     });
     $('crowd-n').addEventListener('change', () => this.loadCrowd());
     $('play').addEventListener('click', () => c.togglePlay());
@@ -65,13 +87,7 @@ export class Toolbar {
       c.painter.draw(); // the backing store holds the current frame
       downloadCanvasPng(c.canvas, c.model.name);
     });
-    $('export-csv').addEventListener('click', () => {
-      try {
-        downloadTrajectoriesCsv(c.scenario());
-      } catch (e) {
-        c.showMessage(messageOf(e));
-      }
-    });
+    $('export-csv').addEventListener('click', () => this.exportCsv());
     $('import').addEventListener('click', () => $('import-file').click());
     $('import-file').addEventListener('change', async () => {
       const input = $('import-file');
@@ -86,6 +102,45 @@ export class Toolbar {
     });
   }
 
+  /**
+   * Writes the CSV of the whole run in slices, its progress over the canvas with a Cancel
+   * button; a run whose CSV would be larger than MAX_CSV_BYTES is refused up front with its
+   * size, pointing to the command line.
+   */
+  async exportCsv() {
+    const c = this.c;
+    const s = c.scenario();
+    if (!s) return;
+    const { rows, bytes } = csvSize(s);
+    if (bytes > MAX_CSV_BYTES) {
+      c.showMessage(
+        `CSV: the whole run is ${rows.toLocaleString('en')} rows, about ${formatBytes(bytes)}: more than the page writes (${formatBytes(MAX_CSV_BYTES)}). ` +
+          'Save the Scenario JSON and run "dvf simulate scenario.json --csv out.csv" (the same format).',
+        { actions: [['Scenario JSON', () => downloadScenarioJson(s)]] },
+      );
+      return;
+    }
+    const abort = new AbortController();
+    const button = c.$('export-csv');
+    button.disabled = true;
+    const text = c.$('message-text');
+    c.showMessage('Writing the CSV: 0 %', { info: true, source: 'csv', actions: [['Cancel', () => abort.abort()]] });
+    try {
+      const pieces = await trajectoriesCsv(s, {
+        signal: abort.signal,
+        progress: (f) => {
+          if (c.messageSource === 'csv') text.textContent = `Writing the CSV: ${Math.floor(f * 100)} %`;
+        },
+      });
+      c.clearMessage('csv');
+      if (pieces) downloadCsv(pieces, s);
+    } catch (e) {
+      c.showMessage(`CSV: ${messageOf(e)}`);
+    } finally {
+      button.disabled = false;
+    }
+  }
+
   /** Fills the preset menu: an "(edited or imported)" entry, the presets, and the crowd. */
   fillMenus(presets, crowdMax) {
     const $ = this.c.$;
@@ -95,7 +150,7 @@ export class Toolbar {
     custom.disabled = true;
     select.append(custom);
     for (const p of presets) {
-      const o = el('option', p.name);
+      const o = el('option', presetLabel(p));
       o.value = p.name;
       o.title = p.summary;
       select.append(o);

@@ -19,10 +19,12 @@
 
 import { fetchScenarioText } from '../io.js';
 import { buildLegend } from '../panels/legend.js';
+import { buildPlotsLegend } from '../panels/plots.js';
 import { ParamsPanel } from '../panels/params.js';
 import { Toolbar } from '../panels/toolbar.js';
 import { Playground, presetScenario } from '../pkg/dvf.js';
 import { Camera } from '../render/camera.js';
+import { readPalette, setPalette } from '../render/theme.js';
 import { changeParam } from './actions.js';
 import { History } from './history.js';
 import { Input } from './input.js';
@@ -77,6 +79,8 @@ export class Controller {
     this.fieldMode = 'arrows';
     this.theta0Deg = DEFAULT_THETA0_DEG;
     this.showSensing = false;
+    /** What showed the message now (showMessage's `source`). */
+    this.messageSource = '';
     /** Bumped by every edit, load, reset and API step: the trail layer redraws from scratch. */
     this.generation = 0;
     this.connected = false;
@@ -86,7 +90,14 @@ export class Controller {
     this.painter = new Painter(this);
     this.toolbar = new Toolbar(this);
     this.params = new ParamsPanel(this.$('params'), (key, value) => changeParam(this, key, value));
+    /** The scene's colours from the stylesheet (render/theme.js), read by readTheme. */
+    this.palette = readPalette(root.querySelector('.pg'));
     buildLegend(this.$('legend'));
+    buildPlotsLegend(this.$('plots-legend'));
+    // The colours are known once the stylesheet has loaded, and change with the system's theme.
+    root.querySelector('link[rel="stylesheet"]')?.addEventListener('load', () => this.readTheme());
+    matchMedia('(prefers-color-scheme: dark)').addEventListener('change', () => this.readTheme());
+    this.$('message-close').addEventListener('click', () => this.showMessage(''));
     this.input = new Input(this);
   }
 
@@ -111,7 +122,7 @@ export class Controller {
   /** The element is in a document: draw. */
   connect() {
     this.connected = true;
-    this.requestDraw();
+    this.readTheme();
   }
 
   /** The element left its document: stop playing and drawing; the simulation is kept. */
@@ -127,7 +138,7 @@ export class Controller {
    * cleared. Throws the core's Error naming the offending field; the scene is kept then.
    */
   load(scenario) {
-    this.#replace(new Playground(scenario), null);
+    this.#replace(new Playground(scenario), null, scenario);
     this.history.clear();
     this.toolbar.update();
   }
@@ -173,10 +184,11 @@ export class Controller {
     this.#emit('import');
   }
 
-  #replace(pg, presetName) {
+  #replace(pg, presetName, wanted = null) {
     const old = this.pg;
     this.pg = pg;
     old?.free();
+    if (wanted) this.#exactify(wanted);
     this.views.attach(pg);
     this.loop.newScene();
     this.selection = null;
@@ -189,9 +201,51 @@ export class Controller {
     this.preset =
       presetName ?? this.presetList.find((p) => JSON.stringify(presetScenario(p.name)) === model)?.name ?? null;
     this.toolbar.showPreset(this.preset);
-    this.params.fill(this.model.params, this.root.activeElement);
+    this.params.fill(this.model, this.root.activeElement);
     this.toolbar.update();
     this.requestDraw();
+  }
+
+  /**
+   * After the core read scenario `wanted` (object or JSON text): the few numbers it read a unit
+   * in the last place off (its fast number parser rounds twice; www/exact-json.js writes digits
+   * it reads exactly wherever there are such digits) are set to the very values through the
+   * fine-grained edits, so that a scene exported and imported is the same scene to the bit.
+   */
+  #exactify(wanted) {
+    let w = wanted;
+    try {
+      if (typeof w === 'string') w = JSON.parse(w);
+    } catch {
+      return;
+    }
+    const s = this.pg.scenario();
+    if (!Array.isArray(w?.robots) || w.robots.length !== s.robots.length) return;
+    const pose = (p, n) => Array.isArray(p) && p.length === n && p.every((v) => typeof v === 'number');
+    const differs = (a, b) => a.some((v, j) => v !== b[j]);
+    try {
+      w.robots.forEach((r, i) => {
+        const have = s.robots[i];
+        if (pose(r.start, 3) && differs(r.start, have.start)) this.pg.moveRobot(i, r.start[0], r.start[1], r.start[2]);
+        if (pose(r.goal, 3) && differs(r.goal, have.goal)) this.pg.moveGoal(i, r.goal[0], r.goal[1], r.goal[2]);
+      });
+      (Array.isArray(w.obstacles) ? w.obstacles : []).forEach((o, k) => {
+        const have = s.obstacles[k];
+        if (!have) return;
+        if (pose(o.center, 2) && differs(o.center, have.center)) this.pg.moveObstacle(k, o.center[0], o.center[1]);
+        const r = typeof o.radius === 'number' ? o.radius : have.radius;
+        const infl = typeof o.influence === 'number' ? o.influence : have.influence;
+        if (r !== have.radius || infl !== have.influence) this.pg.resizeObstacle(k, r, infl);
+      });
+      for (const [key, v] of Object.entries(w.params ?? {})) {
+        if (typeof v === 'number' && key in s.params && s.params[key] !== v) this.pg.setParam(key, v);
+      }
+      for (const key of ['duration', 'dt']) {
+        if (typeof w[key] === 'number' && s[key] !== w[key]) this.pg.setParam(key, w[key]);
+      }
+    } catch {
+      // A value the core refuses once exact (it took it a hair away): the core's values stay.
+    }
   }
 
   /** The current scenario as a plain object (a copy), or null before the first scene. */
@@ -414,7 +468,7 @@ export class Controller {
     if (!this.pg) return;
     const now = () => this.text();
     if (this.history.travel(direction, now, (text) => this.#apply(text))) {
-      this.params.fill(this.model.params, this.root.activeElement);
+      this.params.fill(this.model, this.root.activeElement);
       this.#emit(direction);
     }
     this.toolbar.update();
@@ -487,11 +541,51 @@ export class Controller {
     this.requestDraw();
   }
 
-  /** Shows `text` in the message bar (as text, never HTML); empty hides it. */
-  showMessage(text) {
+  /**
+   * Shows `text` over the canvas (as text, never HTML) until the user acts (an edit, a load,
+   * the × button) or a newer message replaces it; empty hides it. `info` marks a notice rather
+   * than an error; `actions` are buttons `[label, run]` beside the text; `source` names what
+   * showed it, for clearMessage.
+   * @param {string} text
+   * @param {{info?: boolean, actions?: [string, () => void][], source?: string}} [options]
+   */
+  showMessage(text, { info = false, actions = [], source = '' } = {}) {
     const box = this.$('message');
-    box.textContent = text ?? '';
+    this.$('message-text').textContent = text ?? '';
+    const buttons = actions.map(([label, run]) => {
+      const b = document.createElement('button');
+      b.type = 'button';
+      b.textContent = label;
+      b.addEventListener('click', () => {
+        this.showMessage('');
+        run();
+      });
+      return b;
+    });
+    this.$('message-actions').replaceChildren(...buttons);
+    box.classList.toggle('info', info);
     box.hidden = !text;
+    this.messageSource = text ? source : '';
+  }
+
+  /** Hides the message if `source` showed it. */
+  clearMessage(source) {
+    if (this.messageSource === source) this.showMessage('');
+  }
+
+  /** Reads the theme's colours again (the stylesheet, the `theme` attribute, the system's). */
+  readTheme() {
+    const theme = this.host.getAttribute('theme');
+    const dark = theme === 'dark' || (theme !== 'light' && matchMedia('(prefers-color-scheme: dark)').matches);
+    const pg = this.root.querySelector('.pg');
+    pg.classList.toggle('dark', dark);
+    this.palette = readPalette(pg);
+    setPalette(this.palette);
+    const p = this.palette;
+    this.painter.plots.colours = { text: p.plotText, axis: p.plotAxis, pair: p.plotPair };
+    this.painter.newTheme();
+    buildLegend(this.$('legend'));
+    this.requestDraw();
   }
 
   requestDraw() {

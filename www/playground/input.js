@@ -1,7 +1,9 @@
 // Pointer, wheel and keyboard input on a playground's canvas. Mouse, touch and pen through
 // pointer events: drag a robot, goal, obstacle or handle (one gesture of the controller, its
 // moves coalesced to one per animation frame), drag the background to pan, pinch with two
-// fingers to zoom; the wheel zooms about the pointer; keys act on the focused canvas.
+// fingers to zoom; the wheel zooms about the pointer; keys act anywhere inside the element but
+// in a text field (and leave a focused button, menu or box the keys it uses itself), and a key
+// handled here stops here: it never reaches the page.
 
 import { addObstacleInView, addRobotInView, deleteSelection, nudgeSelection } from './actions.js';
 import { hitTest } from './hit.js';
@@ -31,7 +33,8 @@ export class Input {
     canvas.addEventListener('pointerup', (e) => this.pointerUp(e));
     canvas.addEventListener('pointercancel', (e) => this.pointerUp(e));
     canvas.addEventListener('wheel', (e) => this.wheel(e), { passive: false });
-    canvas.addEventListener('keydown', (e) => this.keyDown(e));
+    // Keys anywhere inside the element (its shadow root), not only on the canvas.
+    controller.root.addEventListener('keydown', (e) => this.keyDown(/** @type {KeyboardEvent} */ (e)));
   }
 
   /** Where the pointer is, in canvas CSS px. */
@@ -114,6 +117,7 @@ export class Input {
       if (d.moved) c.commit(d.kind);
       else c.cancel();
     }
+    c.clearMessage('drag');
     c.requestDraw();
   }
 
@@ -174,9 +178,11 @@ export class Input {
         const o = c.model.obstacles[i];
         c.resizeObstacle(i, o.radius, Math.max(Math.hypot(wx - o.center[0], wy - o.center[1]), o.radius * 1.01));
       }
-      c.showMessage('');
+      c.clearMessage('drag');
     } catch (e) {
-      c.showMessage(messageOf(e));
+      // Over the canvas, so the view does not move; gone once the drag ends (the scene keeps
+      // its last valid position).
+      c.showMessage(messageOf(e), { source: 'drag' });
     }
   }
 
@@ -191,9 +197,20 @@ export class Input {
     c.zoom(e.deltaY < 0 ? ZOOM_STEP : 1 / ZOOM_STEP, px, py);
   }
 
+  /** Whether the focused part `target` needs key `e` itself (typing, a button's Space). */
+  static ownsKey(target, e) {
+    const tag = target?.tagName;
+    const mod = e.ctrlKey || e.metaKey;
+    if (tag === 'TEXTAREA' || target?.isContentEditable) return true;
+    if (tag === 'INPUT') return target.type !== 'checkbox' || e.key === ' ';
+    if (tag === 'SELECT') return !mod && e.key !== 'Delete' && e.key !== 'Escape';
+    if (tag === 'BUTTON') return e.key === ' ' || e.key === 'Enter';
+    return false;
+  }
+
   keyDown(e) {
     const c = this.c;
-    if (!c.pg) return;
+    if (!c.pg || e.defaultPrevented || Input.ownsKey(e.composedPath()[0], e)) return;
     const mod = e.ctrlKey || e.metaKey;
     const key = e.key;
     const centre = () => [c.canvas.clientWidth / 2, c.canvas.clientHeight / 2];
@@ -226,6 +243,7 @@ export class Input {
     } else handled = false;
     if (handled) {
       e.preventDefault();
+      e.stopPropagation();
       c.toolbar.update();
       c.requestDraw();
     }

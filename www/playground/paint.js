@@ -7,7 +7,7 @@ import { PlotsPanel } from '../panels/plots.js';
 import { fitCanvas } from '../render/canvas.js';
 import { drawScene } from '../render/scene.js';
 import { SpriteLayer } from '../render/sprites.js';
-import { FIELD_SPACING_PX } from '../render/theme.js';
+import { FIELD_SPACING_PX, setPalette } from '../render/theme.js';
 import { TRAIL_SETTLE_MS, TrailLayer } from '../render/trails.js';
 import { messageOf } from './message.js';
 
@@ -35,8 +35,16 @@ export class Painter {
     this.curvesKey = '';
   }
 
+  /** New colours: the crowd's sprites and the trails are drawn anew. */
+  newTheme() {
+    this.spriteLayer = new SpriteLayer();
+    this.c.generation += 1;
+  }
+
   draw() {
     const c = this.c;
+    // The module's colours are shared by every playground of the page: this one's, now.
+    setPalette(c.palette);
     const { ctx, width, height } = fitCanvas(c.canvas);
     const view = c.view();
     const fieldLength = c.fieldMode === 'arrows' ? this.sampleField(view, width, height) : 0;

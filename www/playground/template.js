@@ -1,5 +1,5 @@
-// The HTML of <dvf-playground>'s shadow root: toolbar, message bar, canvas with its clock,
-// title and hint, and the side panels (inspected robot with its plots, parameters, legend).
+// The HTML of <dvf-playground>'s shadow root: toolbar, canvas with its clock, title, hint and
+// message (over the canvas, so that a message moves nothing), and the side panels (inspected robot with its plots, parameters, legend).
 // Parts are found by their `data-id`; the stylesheet is ../playground.css, found relative to
 // this module. Nothing from a scenario is ever put into this HTML.
 
@@ -40,20 +40,22 @@ export const TEMPLATE = `
       <input data-id="import-file" type="file" accept=".json,application/json" hidden>
     </span>
   </div>
-  <div class="message" data-id="message" role="alert" hidden></div>
   <div class="body">
     <div class="stage">
       <canvas data-id="canvas" tabindex="0" role="application"
         aria-label="Playground canvas. Drag robots, goals and obstacles; keys: Space play, S step, R reset, arrows move, Q and E turn, A add robot, O add obstacle, Delete, brackets select, F fit."></canvas>
-      <div class="clock" data-id="clock"></div>
-      <div class="title" data-id="title"></div>
-      <div class="hint" data-id="hint"></div>
+      <div class="overlay">
+        <div class="overlay-row"><div class="clock" data-id="clock"></div><div class="title" data-id="title"></div></div>
+        <div class="hint" data-id="hint"></div>
+      </div>
+      <div class="message" data-id="message" role="alert" hidden><span class="message-text" data-id="message-text"></span><span data-id="message-actions"></span><button type="button" data-id="message-close" aria-label="Dismiss the message" title="Dismiss">×</button></div>
     </div>
     <aside class="side full">
       <section>
         <h3>Inspected robot</h3>
         <p class="robot-info" data-id="robot-info"></p>
-        <canvas data-id="plots" aria-label="Minimum pair distance and the selected robot's errors over time"></canvas>
+        <canvas data-id="plots" aria-label="Minimum pair distance and the selected robot's errors over time; click to go to a time"></canvas>
+        <ul class="plots-legend" data-id="plots-legend"></ul>
       </section>
       <section>
         <h3>Parameters</h3>
