@@ -461,4 +461,140 @@ await run(async ({ base, newPage }) => {
     checkQuiet(page, 'small defects');
     await page.context().close();
   });
+  // ---- Themes: the system's, the attribute's, the page's custom properties; px sizes.
+  await section('themes', async () => {
+    const bg = (page, sel = PG) =>
+      page.evaluate((s) => {
+        const c = document.querySelector(s).shadowRoot.querySelector('[data-id="canvas"]');
+        const copy = document.createElement('canvas');
+        copy.width = 1;
+        copy.height = 1;
+        copy.getContext('2d').drawImage(c, 2, 2, 1, 1, 0, 0, 1, 1);
+        return [...copy.getContext('2d').getImageData(0, 0, 1, 1).data.slice(0, 3)];
+      }, sel);
+    const lum = ([r, g, b]) => (r + g + b) / 3;
+    const light = await openMain(newPage, base);
+    const dark = await openMain(newPage, base, '', { colorScheme: 'dark' });
+    const l = await bg(light);
+    const d = await bg(dark);
+    check(lum(l) > 150 && lum(d) < 80, `prefers-color-scheme picks the theme (canvas corner ${l} light, ${d} dark)`);
+    await dark.screenshot({ path: join(RESULTS, 'instrument-dark.png') });
+    await light.evaluate((s) => document.querySelector(s).setAttribute('theme', 'dark'), PG);
+    await frames(light);
+    const forced = await bg(light);
+    check(lum(forced) < 80, `theme="dark" forces the dark theme (${forced})`);
+    await dark.evaluate((s) => document.querySelector(s).setAttribute('theme', 'light'), PG);
+    await frames(dark);
+    const forcedLight = await bg(dark);
+    check(lum(forcedLight) > 150, `theme="light" forces the light theme under a dark system (${forcedLight})`);
+    await light.evaluate(
+      (s) => document.querySelector(s).style.setProperty('--dvf-canvas-background', 'rgb(200, 0, 0)'),
+      PG,
+    );
+    await light.evaluate((s) => document.querySelector(s).setAttribute('theme', 'light'), PG);
+    await frames(light);
+    const custom = await bg(light);
+    check(custom[0] > 150 && custom[1] < 60, `--dvf-canvas-background colours the canvas (${custom})`);
+    const h0 = await part(light, 'play').evaluate((e) => e.getBoundingClientRect().height);
+    await light.addStyleTag({ content: 'html { font-size: 40px }' });
+    await frames(light);
+    const h1 = await part(light, 'play').evaluate((e) => e.getBoundingClientRect().height);
+    check(h0 === h1, `the element's sizes do not follow the page's root font size (${h0} and ${h1} px)`);
+    checkQuiet(light, 'themes (light)');
+    checkQuiet(dark, 'themes (dark)');
+    await light.context().close();
+    await dark.context().close();
+  });
+
+  // ---- Time: the scrubber, a click on a plot, the stop once every robot is at its goal.
+  await section('time', async () => {
+    const page = await openMain(newPage, base);
+    const time = () => page.evaluate((s) => document.querySelector(s).cache.time, PG);
+    const scrubber = part(page, 'scrubber');
+    await scrubber.fill('500');
+    await page.waitForFunction(
+      (s) => !document.querySelector(s).shadowRoot.querySelector('[data-id="clock"]').textContent.includes('going'),
+      PG,
+    );
+    const s = await scenarioOf(page);
+    const half = await time();
+    // The scrubber has 1,000 positions: the time is within one step of the middle.
+    check(Math.abs(half - s.duration / 2) <= s.dt * 1.01, `the scrubber goes to the middle of the run (t = ${half})`);
+    const box = await part(page, 'plots').boundingBox();
+    const g = await page.evaluate((s) => document.querySelector(s).plotGeometry, PG);
+    await page.mouse.click(box.x + g[0].x0 + (g[0].x1 - g[0].x0) * 0.2, box.y + box.height * 0.75);
+    await page.waitForFunction(
+      (s) => !document.querySelector(s).shadowRoot.querySelector('[data-id="clock"]').textContent.includes('going'),
+      PG,
+    );
+    const fifth = await time();
+    // A click lands on a whole CSS pixel of the axis: within one pixel's worth of time.
+    const pxTime = s.duration / (g[0].x1 - g[0].x0);
+    check(
+      Math.abs(fifth - s.duration * 0.2) <= pxTime + s.dt,
+      `a click on a plot goes to that time (t = ${fifth}, asked ${s.duration * 0.2})`,
+    );
+    const speeds = await part(page, 'speed').evaluate((e) => [...e.options].map((o) => Number(o.value)));
+    check(Math.max(...speeds) >= 16, `the speeds go up to ${Math.max(...speeds)}×`);
+    await part(page, 'speed').selectOption('32');
+    await part(page, 'play').click();
+    await page.waitForFunction(
+      (s) =>
+        !document.querySelector(s).cache ||
+        document.querySelector(s).shadowRoot.querySelector('[data-id="play"]').textContent === 'Play',
+      PG,
+      { timeout: 30_000 },
+    );
+    const stopped = await time();
+    const clock = await part(page, 'clock').textContent();
+    check(
+      stopped < s.duration && clock.includes('every robot at its goal'),
+      `the run stops once every robot has converged ("${clock}")`,
+    );
+    checkQuiet(page, 'time');
+    await page.context().close();
+  });
+
+  // ---- Results: what dvf simulate reports, copyable as JSON; editing by number.
+  await section('results', async () => {
+    const page = await openMain(newPage, base, '', { permissions: ['clipboard-read', 'clipboard-write'] });
+    await page.waitForSelector(`${PG} [data-id="results"][data-ready]`);
+    const text = await part(page, 'results').textContent();
+    check(
+      /10 of 10 robots converged/.test(text) && text.includes('violations'),
+      `the results panel shows the report ("${text.slice(0, 80)}")`,
+    );
+    await part(page, 'copy-results').click();
+    const copied = JSON.parse(await page.evaluate(() => navigator.clipboard.readText()));
+    const expected = await page.evaluate(
+      (s) =>
+        import('./pkg/dvf.js').then((m) => {
+          const r = new m.Run(document.querySelector(s).scenario());
+          const rep = r.report();
+          r.free();
+          return rep;
+        }),
+      PG,
+    );
+    check(
+      JSON.stringify(copied) === JSON.stringify(expected),
+      'Copy JSON puts the report of dvf simulate on the clipboard',
+    );
+    // By number: a key on the canvas (] selects robot 1, Escape nothing), then a value typed.
+    const byNumber = async (key, name, value) => {
+      await part(page, 'canvas').focus();
+      await page.keyboard.press(key);
+      await frames(page);
+      const input = page.locator(`${PG} input[name="selection-${name}"]`);
+      await input.fill(value);
+      await input.press('Enter');
+    };
+    await byNumber(']', 'x', '-70');
+    const moved = (await scenarioOf(page)).robots[0].start[0];
+    check(moved === -70, `the selected robot's x is set by number (${moved})`);
+    await byNumber('Escape', 'xmax', '120');
+    check((await scenarioOf(page)).bounds[2] === 120, 'with nothing selected, the bounds are set by number');
+    checkQuiet(page, 'results');
+    await page.context().close();
+  });
 });

@@ -62,6 +62,25 @@ export class Toolbar {
     $('play').addEventListener('click', () => c.togglePlay());
     $('step').addEventListener('click', () => c.stepTime());
     $('reset').addEventListener('click', () => c.reset());
+    // The scrubber: any time of the run (a seek, frame by frame); the frame keeps it in step
+    // with the clock unless it is held.
+    const scrubber = $('scrubber');
+    this.scrubbing = false;
+    scrubber.addEventListener('pointerdown', () => {
+      this.scrubbing = true;
+    });
+    const release = () => {
+      this.scrubbing = false;
+    };
+    scrubber.addEventListener('pointerup', release);
+    scrubber.addEventListener('change', release);
+    scrubber.addEventListener('input', () => {
+      if (c.pg) c.seekTo((Number(scrubber.value) / Number(scrubber.max)) * c.pg.duration);
+    });
+    $('plots').addEventListener('pointerdown', (e) => {
+      const t = c.painter.plots.timeAt(e.offsetX);
+      if (t != null) c.seekTo(t);
+    });
     $('undo').addEventListener('click', () => c.undo());
     $('redo').addEventListener('click', () => c.redo());
     $('add-robot').addEventListener('click', () => addRobotInView(c));
@@ -194,6 +213,13 @@ export class Toolbar {
     $('field').value = fieldMode;
     $('theta0').value = String(theta0Deg);
     $('sensing').checked = showSensing;
+  }
+
+  /** The scrubber at time `t` of `duration` (s), unless it is held. */
+  showTime(t, duration) {
+    if (this.scrubbing) return;
+    const scrubber = this.c.$('scrubber');
+    scrubber.value = String(Math.round((t / (duration || 1)) * Number(scrubber.max)));
   }
 
   /** The play button and the undo, redo and delete buttons as the state is now. */

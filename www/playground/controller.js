@@ -21,6 +21,8 @@ import { fetchScenarioText } from '../io.js';
 import { buildLegend } from '../panels/legend.js';
 import { buildPlotsLegend } from '../panels/plots.js';
 import { ParamsPanel } from '../panels/params.js';
+import { ResultsPanel } from '../panels/results.js';
+import { SelectionPanel } from '../panels/selection.js';
 import { Toolbar } from '../panels/toolbar.js';
 import { Playground, presetScenario } from '../pkg/dvf.js';
 import { Camera } from '../render/camera.js';
@@ -31,7 +33,7 @@ import { Input } from './input.js';
 import { FrameLoop } from './loop.js';
 import { messageOf } from './message.js';
 import { Painter } from './paint.js';
-import { LiveViews, WASM_READY } from './wasm-views.js';
+import { LiveViews, POSE_STRIDE, WASM_READY } from './wasm-views.js';
 
 /** The Step button and the S key advance this much simulated time (s). */
 const STEP_TIME_S = 0.1;
@@ -90,6 +92,8 @@ export class Controller {
     this.painter = new Painter(this);
     this.toolbar = new Toolbar(this);
     this.params = new ParamsPanel(this.$('params'), (key, value) => changeParam(this, key, value));
+    this.results = new ResultsPanel(this);
+    this.selectionPanel = new SelectionPanel(this);
     /** The scene's colours from the stylesheet (render/theme.js), read by readTheme. */
     this.palette = readPalette(root.querySelector('.pg'));
     buildLegend(this.$('legend'));
@@ -203,6 +207,7 @@ export class Controller {
     this.toolbar.showPreset(this.preset);
     this.params.fill(this.model, this.root.activeElement);
     this.toolbar.update();
+    this.results.stale();
     this.requestDraw();
   }
 
@@ -267,7 +272,7 @@ export class Controller {
 
   play() {
     if (!this.pg) return;
-    if (this.pg.finished) this.reset();
+    if (this.pg.finished || this.allConverged()) this.reset();
     this.loop.play();
     this.toolbar.update();
     this.requestDraw();
@@ -287,14 +292,47 @@ export class Controller {
   /** Back to t = 0 at the scenario's starts (trails cleared). */
   reset() {
     if (!this.pg) return;
+    this.loop.seekStep = null;
+    this.loop.convergedAt = null;
+    this.rewind();
+  }
+
+  /** Back to t = 0 for a seek (which goes on from there). */
+  rewind() {
     this.pg.reset();
     this.#changed();
+  }
+
+  /** Goes to time `t` (s) of the run, in slices (FrameLoop.seekTo); the scrubber, the plots. */
+  seekTo(t) {
+    if (!this.pg || !Number.isFinite(t)) return;
+    this.loop.seekTo(t);
+    this.toolbar.update();
+  }
+
+  /**
+   * Whether every robot is within the tolerances of its goal now (tol_position, tol_heading:
+   * the prediction's test, src/playground/prediction.rs), when the clock stops.
+   */
+  allConverged() {
+    const s = this.model;
+    const p = this.views.poses;
+    const { tol_position: tolP, tol_heading: tolH } = s.params;
+    for (let i = 0; i < s.robots.length; i++) {
+      const g = s.robots[i].goal;
+      const o = i * POSE_STRIDE;
+      if (Math.hypot(p[o] - g[0], p[o + 1] - g[1]) > tolP) return false;
+      const d = Math.abs(p[o + 2] - g[2]) % (2 * Math.PI);
+      if (Math.min(d, 2 * Math.PI - d) > tolH) return false;
+    }
+    return s.robots.length > 0;
   }
 
   /** Advances `n` steps of dt and pauses; returns the steps taken. Throws for a bad `n`. */
   step(n = 1) {
     if (!this.pg) return 0;
     this.pause();
+    this.loop.seekStep = null;
     const taken = this.pg.step(n);
     this.#changed();
     return taken;
@@ -488,6 +526,7 @@ export class Controller {
 
   /** Tells the page: a `change` event of `kind`; the scene is no longer a preset but after one. */
   #emit(kind) {
+    if (kind !== 'preset') this.results.stale();
     if (kind !== 'preset' && this.preset) {
       this.preset = null;
       this.toolbar.showPreset(null);

@@ -78,14 +78,22 @@ export class Painter {
       loop.playing && loop.rate < loop.speed * 0.995
         ? ` (${loop.rate.toPrecision(2)}× real time: the crowd steps slower than the clock)`
         : '';
-    c.$('clock').textContent =
-      `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s${loop.playing ? slowed : ' (paused)'}`;
+    const state = loop.playing
+      ? slowed
+      : loop.seekStep != null
+        ? ' (going there…)'
+        : loop.convergedAt != null
+          ? ' (stopped: every robot at its goal)'
+          : ' (paused)';
+    c.$('clock').textContent = `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s${state}`;
+    c.toolbar.showTime(scene.time, scene.duration);
     c.$('hint').textContent = this.hintText();
     // Free text from the scenario: textContent only, never HTML.
     c.$('title').textContent = c.model.name;
     if (c.host.hasAttribute('controls')) {
       this.plots.draw(scene, c.focusRobot);
       showInspected(c.$('robot-info'), c.focusRobot, c.model.robots.length, scene.status);
+      c.selectionPanel.update();
     }
   }
 

@@ -15,6 +15,7 @@ export const TEMPLATE = `
       <button type="button" data-id="play" aria-pressed="false" title="Play / pause (Space)">Play</button>
       <button type="button" data-id="step" title="Advance 0.1 s (S)">Step</button>
       <button type="button" data-id="reset" title="Back to t = 0 at the starts (R)">Reset</button>
+      <input type="range" data-id="scrubber" class="scrubber" min="0" max="1000" step="1" value="0" aria-label="Time of the run: drag to go to any time" title="Go to any time of the run">
       <label class="full">Speed <select data-id="speed" aria-label="Playback speed"></select></label>
     </span>
     <span class="group full">
@@ -56,6 +57,14 @@ export const TEMPLATE = `
         <p class="robot-info" data-id="robot-info"></p>
         <canvas data-id="plots" aria-label="Minimum pair distance and the selected robot's errors over time; click to go to a time"></canvas>
         <ul class="plots-legend" data-id="plots-legend"></ul>
+      </section>
+      <section>
+        <h3>Results <button type="button" data-id="copy-results" class="small" disabled title="Copy the report (the JSON of dvf simulate)">Copy JSON</button></h3>
+        <div class="results" data-id="results"></div>
+      </section>
+      <section>
+        <h3>By number: <span data-id="selection-title"></span></h3>
+        <form data-id="selection" class="params"></form>
       </section>
       <section>
         <h3>Parameters</h3>
