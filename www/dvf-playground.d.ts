@@ -250,6 +250,10 @@ export declare class DvfPlayground extends HTMLElement {
    * it. `info`: a notice rather than an error; `actions`: buttons beside it, `[label, run]`.
    */
   showMessage(text: string, options?: { info?: boolean; actions?: [string, () => void][] }): void;
+  /** What the view shows (field overlay, θ(0), sensing, inspected robot, time, box in view). */
+  viewState(): ViewState | null;
+  /** Shows a view (any of its fields; invalid ones are left as they are). */
+  setViewState(state: Partial<ViewState>): void;
   /** Resolves once the first scene is shown. */
   readonly loaded: Promise<void>;
 
@@ -296,6 +300,8 @@ export declare class DvfPlayground extends HTMLElement {
 export interface DvfPlaygroundEventMap extends HTMLElementEventMap {
   /** After each edit. */
   change: CustomEvent<{ kind: ChangeKind }>;
+  /** After the view changed (display, camera, inspected robot, the clock at rest). */
+  viewchange: CustomEvent;
 }
 
 declare global {
@@ -311,4 +317,18 @@ export interface PlotGeometry {
   nowX: number;
   timeTicks: number[];
   valueTicks: number[];
+}
+
+/** What a view shows, for a link: see `DvfPlayground.viewState`. */
+export interface ViewState {
+  field: FieldMode;
+  /** θ(0) of the integral curves (degrees). */
+  theta0: number;
+  sensing: boolean;
+  /** The inspected robot, from 0. */
+  robot: number;
+  /** The time (s). */
+  time: number;
+  /** The world box in view ([xmin, ymin, xmax, ymax], m) once panned or zoomed, else null. */
+  box: [number, number, number, number] | null;
 }

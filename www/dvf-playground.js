@@ -45,6 +45,12 @@
 //                         `info` (a notice, not an error), `actions` (buttons, [label, run]
 //                         pairs). www/main.js reports bad links and links too long with it
 //
+//   viewState()           what the view shows: {field, theta0 (degrees), sensing, robot (the
+//                         inspected, from 0), time (s), box ([xmin, ymin, xmax, ymax] in view
+//                         once panned or zoomed, else null)}; null before the first scene
+//   setViewState(state)   shows such a view (any of its fields; invalid ones are left as they
+//                         are; a time is gone to as a seek). www/main.js keeps it in the link
+//
 // Keys: handled anywhere inside the element (not while typing in a field); a key the element
 // handles stops there (stopPropagation and preventDefault): it never reaches the page.
 //
@@ -57,6 +63,8 @@
 //                         `robot-heading`, `goal`, `goal-heading`, `obstacle`, `obstacle-radius`,
 //                         `obstacle-influence`, `add-robot`, `add-obstacle`, `delete`,
 //                         `params`, `preset`, `import`, `undo` or `redo`
+//   viewchange            after the view changed (field overlay, θ(0), sensing circles,
+//                         inspected robot, pan or zoom, the clock paused, a seek or a step)
 //
 // Diagnostics, for the end-to-end tests and benchmarks (not a stable API; null before the
 // first scene):
@@ -218,6 +226,14 @@ export class DvfPlayground extends HTMLElement {
 
   showMessage(text, options) {
     this.#controller?.showMessage(text, options);
+  }
+
+  viewState() {
+    return this.#controller?.pg ? this.#controller.viewState() : null;
+  }
+
+  setViewState(state) {
+    this.#controller?.setViewState(state);
   }
 
   // ---- diagnostics --------------------------------------------------------------------------

@@ -33,10 +33,52 @@ export function fragmentFor(scenario) {
   return FRAGMENT_PREFIX + encodeURIComponent(exactJson(scenario));
 }
 
+/** The field overlays a link may ask for. */
+const LINK_FIELDS = ['arrows', 'curves', 'none'];
+
+/**
+ * The view's part of a link for `v` (the element's viewState()): `&field=…&theta0=…&sensing=1
+ * &robot=…&t=…&view=x0,y0,x1,y1`, each only when it is not the default (the robot numbered from
+ * 1, as on the page).
+ * @param {import('./dvf-playground.js').ViewState | null} v
+ */
+export function viewSuffix(v) {
+  if (!v) return '';
+  const parts = [];
+  if (v.field !== 'arrows') parts.push(`field=${v.field}`);
+  if (v.theta0 !== 90) parts.push(`theta0=${v.theta0}`);
+  if (v.sensing) parts.push('sensing=1');
+  if (v.robot > 0) parts.push(`robot=${v.robot + 1}`);
+  if (v.time > 0) parts.push(`t=${Number(v.time.toFixed(6))}`);
+  if (v.box) parts.push(`view=${v.box.map((x) => Number(x.toPrecision(7))).join(',')}`);
+  return parts.map((p) => `&${p}`).join('');
+}
+
+/** The view a link's `&key=value` parts ask for (viewSuffix's); unknown or bad parts are left out. */
+function parseView(parts) {
+  /** @type {Partial<import('./dvf-playground.js').ViewState>} */
+  const v = {};
+  for (const part of parts) {
+    const [key, value = ''] = part.split('=');
+    const n = Number(value);
+    if (key === 'field' && LINK_FIELDS.includes(value)) v.field = /** @type {any} */ (value);
+    else if (key === 'theta0' && value !== '' && Number.isFinite(n)) v.theta0 = n;
+    else if (key === 'sensing') v.sensing = value === '1';
+    else if (key === 'robot' && Number.isInteger(n) && n >= 1) v.robot = n - 1;
+    else if (key === 't' && value !== '' && Number.isFinite(n) && n >= 0) v.time = n;
+    else if (key === 'view') {
+      const box = value.split(',').map(Number);
+      if (box.length === 4 && box.every(Number.isFinite)) v.box = /** @type {any} */ (box);
+    }
+  }
+  return Object.keys(v).length ? v : null;
+}
+
 /**
  * What a fragment asks for: `{kind: 'none'}`, `{kind: 'preset', name}` for `#name`, or
- * `{kind: 'scenario', text}` for `#s=…`. Throws an Error with a message a person can act on
- * when the fragment is too long or not decodable; the JSON itself is checked by the core.
+ * `{kind: 'scenario', text}` for `#s=…`, with `view` (parseView) when it has a view's part.
+ * Throws an Error with a message a person can act on when the fragment is too long or not
+ * decodable; the JSON itself is checked by the core.
  */
 export function parseFragment(hash) {
   if (!hash || hash === '#') return { kind: 'none' };
@@ -45,22 +87,25 @@ export function parseFragment(hash) {
       `link: the scenario in the address is ${hash.length} characters long; at most ${MAX_LINK_CHARS} are accepted`,
     );
   }
-  if (hash.startsWith(FRAGMENT_PREFIX)) {
+  // A scenario's JSON is URI-encoded, so the first `&` starts the view's part.
+  const [scene, ...rest] = hash.split('&');
+  const view = parseView(rest);
+  if (scene.startsWith(FRAGMENT_PREFIX)) {
     let text;
     try {
-      text = decodeURIComponent(hash.slice(FRAGMENT_PREFIX.length));
+      text = decodeURIComponent(scene.slice(FRAGMENT_PREFIX.length));
     } catch {
       throw new Error('link: the scenario in the address is not correctly percent-encoded (was it cut short?)');
     }
-    return { kind: 'scenario', text };
+    return { kind: 'scenario', text, view };
   }
   let name;
   try {
-    name = decodeURIComponent(hash.slice(1));
+    name = decodeURIComponent(scene.slice(1));
   } catch {
     throw new Error('link: the address fragment is not correctly percent-encoded');
   }
-  return { kind: 'preset', name };
+  return { kind: 'preset', name, view };
 }
 
 /** Offers `blob` as a download named `filename`. */

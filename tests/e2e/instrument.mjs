@@ -597,4 +597,63 @@ await run(async ({ base, newPage }) => {
     checkQuiet(page, 'results');
     await page.context().close();
   });
+  // ---- Help: ? shows the controls and keys over the canvas, Escape closes it.
+  await section('help', async () => {
+    const page = await openMain(newPage, base);
+    await part(page, 'canvas').focus();
+    await page.keyboard.press('?');
+    const shown = await part(page, 'help-panel').isVisible();
+    const text = await part(page, 'help-panel').textContent();
+    await page.screenshot({ path: join(RESULTS, 'instrument-help.png') });
+    await page.keyboard.press('Escape');
+    const hidden = await part(page, 'help-panel').isHidden();
+    await part(page, 'help').click();
+    const again = await part(page, 'help-panel').isVisible();
+    check(
+      shown && text.includes('Space') && text.includes('Ctrl+Z') && hidden && again,
+      'the ? key and button show the controls and keys; Escape closes them',
+    );
+    checkQuiet(page, 'help');
+    await page.context().close();
+  });
+  // ---- The view in the link: field mode, θ(0), R_s, the inspected robot, the time, the box.
+  await section('view in the link', async () => {
+    const asked = '&field=curves&theta0=45&sensing=1&robot=3&t=5&view=-50,-40,50,40';
+    const page = await openMain(newPage, base, `#${EXAMPLE4}${asked}`);
+    await page.waitForFunction((s) => document.querySelector(s).viewState().time > 4.9, PG);
+    await frames(page);
+    const v = await page.evaluate((s) => document.querySelector(s).viewState(), PG);
+    const s = await scenarioOf(page);
+    // The box shown holds the box asked for, about the same centre (rounding: 1e-6 m).
+    const holds =
+      v.box && v.box[0] <= -50 + 1e-6 && v.box[2] >= 50 - 1e-6 && v.box[1] <= -40 + 1e-6 && v.box[3] >= 40 - 1e-6;
+    const centred = v.box && Math.abs(v.box[0] + v.box[2]) < 1e-6 && Math.abs(v.box[1] + v.box[3]) < 1e-6;
+    check(
+      v.field === 'curves' &&
+        v.theta0 === 45 &&
+        v.sensing &&
+        v.robot === 2 &&
+        Math.abs(v.time - 5) <= s.dt &&
+        holds &&
+        centred,
+      `a link opens its view (${JSON.stringify(v)})`,
+    );
+    await part(page, 'field').selectOption('none');
+    await part(page, 'canvas').focus();
+    await page.keyboard.press(']');
+    await page.waitForFunction(() => location.hash.includes('field=none'));
+    const hash = await page.evaluate(() => location.hash);
+    const copy = await openMain(newPage, base, hash);
+    await copy.waitForFunction((s) => document.querySelector(s).viewState().time > 4.9, PG);
+    const w = await copy.evaluate((s) => document.querySelector(s).viewState(), PG);
+    const v2 = await page.evaluate((s) => document.querySelector(s).viewState(), PG);
+    check(
+      w.field === 'none' && w.robot === v2.robot && Math.abs(w.time - v2.time) <= s.dt && w.theta0 === 45,
+      `the address keeps the view for a copied link (${hash.split('&').slice(1).join('&')})`,
+    );
+    checkQuiet(page, 'view in the link');
+    checkQuiet(copy, 'view in the copied link');
+    await page.context().close();
+    await copy.context().close();
+  });
 });

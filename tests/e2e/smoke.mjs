@@ -363,7 +363,7 @@ await run(async ({ base, newPage }) => {
   await kv.fill('-1');
   await kv.press('Enter');
   await kv.blur();
-  const paramError = await page.locator(`${PG} .param-error`).textContent();
+  const paramError = await page.locator(`${PG} [data-id="params"] .param-error`).textContent();
   check(
     paramError.startsWith('k_v: must be positive') &&
       (await scenarioOf(page)).params.k_v === 1 &&
@@ -373,7 +373,7 @@ await run(async ({ base, newPage }) => {
   await kv.fill('1.5');
   await kv.press('Enter');
   check(
-    (await scenarioOf(page)).params.k_v === 1.5 && (await page.locator(`${PG} .param-error`).isHidden()),
+    (await scenarioOf(page)).params.k_v === 1.5 && (await page.locator(`${PG} [data-id="params"] .param-error`).isHidden()),
     'k_v = 1.5 applies',
   );
   const vmax = page.locator(`${PG} input[name="v_max"]`);

@@ -87,18 +87,23 @@ export class Toolbar {
     $('add-obstacle').addEventListener('click', () => addObstacleInView(c));
     $('delete').addEventListener('click', () => deleteSelection(c));
     $('fit').addEventListener('click', () => c.fit());
+    $('help').addEventListener('click', () => c.toggleHelp());
+    $('help-close').addEventListener('click', () => c.toggleHelp(false));
     $('field').addEventListener('change', () => {
       c.fieldMode = $('field').value;
+      c.viewChanged();
       c.requestDraw();
     });
     $('theta0').addEventListener('change', () => {
       const v = Number($('theta0').value);
       if (Number.isFinite(v) && $('theta0').value.trim() !== '') c.theta0Deg = v;
       else $('theta0').value = String(c.theta0Deg);
+      c.viewChanged();
       c.requestDraw();
     });
     $('sensing').addEventListener('change', () => {
       c.showSensing = $('sensing').checked;
+      c.viewChanged();
       c.requestDraw();
     });
     $('export-json').addEventListener('click', () => downloadScenarioJson(c.scenario()));

@@ -35,6 +35,8 @@ import { messageOf } from './message.js';
 import { Painter } from './paint.js';
 import { LiveViews, POSE_STRIDE, WASM_READY } from './wasm-views.js';
 
+/** A `viewchange` event waits this long (ms) for the next change (a pan is many). */
+const VIEW_EVENT_MS = 400;
 /** The Step button and the S key advance this much simulated time (s). */
 const STEP_TIME_S = 0.1;
 /** θ(0) of the integral curves until the element says otherwise (degrees): the paper's Fig. 1. */
@@ -81,6 +83,8 @@ export class Controller {
     this.fieldMode = 'arrows';
     this.theta0Deg = DEFAULT_THETA0_DEG;
     this.showSensing = false;
+    /** @type {ReturnType<typeof setTimeout> | null} the pending `viewchange` event */
+    this.viewTimer = null;
     /** What showed the message now (showMessage's `source`). */
     this.messageSource = '';
     /** Bumped by every edit, load, reset and API step: the trail layer redraws from scratch. */
@@ -281,6 +285,7 @@ export class Controller {
   pause() {
     this.loop.pause();
     this.toolbar.update();
+    this.viewChanged();
     this.requestDraw();
   }
 
@@ -295,6 +300,7 @@ export class Controller {
     this.loop.seekStep = null;
     this.loop.convergedAt = null;
     this.rewind();
+    this.viewChanged();
   }
 
   /** Back to t = 0 for a seek (which goes on from there). */
@@ -335,6 +341,7 @@ export class Controller {
     this.loop.seekStep = null;
     const taken = this.pg.step(n);
     this.#changed();
+    this.viewChanged();
     return taken;
   }
 
@@ -562,12 +569,14 @@ export class Controller {
   /** Zooms by `factor` about canvas point (px, py). */
   zoom(factor, px, py) {
     this.camera.zoomAbout(this.view(), factor, px, py);
+    this.viewChanged();
     this.requestDraw();
   }
 
   /** Fits the scenario's bounds in the view. */
   fit() {
     this.camera.fit();
+    this.viewChanged();
     this.requestDraw();
   }
 
@@ -577,6 +586,7 @@ export class Controller {
     this.theta0Deg = theta0Deg;
     this.showSensing = sensing;
     this.toolbar.showDisplay(this);
+    this.viewChanged();
     this.requestDraw();
   }
 
@@ -610,6 +620,71 @@ export class Controller {
   /** Hides the message if `source` showed it. */
   clearMessage(source) {
     if (this.messageSource === source) this.showMessage('');
+  }
+
+  /**
+   * What the view shows, for a link (www/main.js): the field overlay, θ(0) (degrees), the
+   * sensing circles, the inspected robot, the time (s) and, once the user panned or zoomed,
+   * the world box in view ([xmin, ymin, xmax, ymax], m).
+   * @returns {import('../dvf-playground.js').ViewState}
+   */
+  viewState() {
+    const v = this.view();
+    return {
+      field: this.fieldMode,
+      theta0: this.theta0Deg,
+      sensing: this.showSensing,
+      robot: this.focusRobot,
+      time: this.views.time,
+      box: this.camera.user ? [v.wx(0), v.wy(v.height), v.wx(v.width), v.wy(0)] : null,
+    };
+  }
+
+  /**
+   * Shows the view `state` (viewState's fields, each optional): what is not valid for this
+   * scene (a robot that does not exist, a box that is not one, a time past the end) is left
+   * as it is. A time is gone to as a seek.
+   * @param {Partial<import('../dvf-playground.js').ViewState>} state
+   */
+  setViewState(state) {
+    if (!this.pg || !state) return;
+    const { field, theta0, sensing, robot, time, box } = state;
+    this.setDisplay({
+      field: FIELD_MODES.includes(field) ? field : this.fieldMode,
+      theta0Deg: Number.isFinite(theta0) ? theta0 : this.theta0Deg,
+      sensing: typeof sensing === 'boolean' ? sensing : this.showSensing,
+    });
+    if (Number.isInteger(robot) && robot >= 0 && robot < this.model.robots.length) this.focusRobot = robot;
+    if (Array.isArray(box) && box.length === 4 && box.every(Number.isFinite) && box[2] > box[0] && box[3] > box[1]) {
+      const w = Math.max(1, this.canvas.clientWidth);
+      const h = Math.max(1, this.canvas.clientHeight);
+      const scale = Math.min(w / (box[2] - box[0]), h / (box[3] - box[1]));
+      this.camera.state = { cx: (box[0] + box[2]) / 2, cy: (box[1] + box[3]) / 2, scale };
+      this.camera.user = true;
+    }
+    if (Number.isFinite(time) && time > 0 && time <= this.pg.duration) this.seekTo(time);
+    this.requestDraw();
+  }
+
+  /** The view changed (display, camera, inspected robot, time at rest): one `viewchange` soon. */
+  viewChanged() {
+    if (this.viewTimer) clearTimeout(this.viewTimer);
+    this.viewTimer = setTimeout(() => {
+      this.viewTimer = null;
+      this.host.dispatchEvent(new CustomEvent('viewchange'));
+    }, VIEW_EVENT_MS);
+  }
+
+  /** Whether the help overlay is shown. */
+  helpShown() {
+    return !this.$('help-panel').hidden;
+  }
+
+  /** Shows the help overlay (the controls and keys), hides it, or (no `show`) toggles it. */
+  toggleHelp(show = !this.helpShown()) {
+    this.$('help-panel').hidden = !show;
+    if (show) this.$('help-close').focus({ preventScroll: true });
+    else this.canvas.focus({ preventScroll: true });
   }
 
   /** Reads the theme's colours again (the stylesheet, the `theme` attribute, the system's). */

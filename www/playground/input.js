@@ -105,6 +105,7 @@ export class Input {
     this.pointers.delete(e.pointerId);
     if (this.pinch) {
       if (this.pointers.size < 2) this.pinch = null;
+      c.viewChanged();
       if (c.canvas.hasPointerCapture(e.pointerId)) c.canvas.releasePointerCapture(e.pointerId);
       return;
     }
@@ -118,6 +119,7 @@ export class Input {
       else c.cancel();
     }
     c.clearMessage('drag');
+    c.viewChanged();
     c.requestDraw();
   }
 
@@ -231,6 +233,8 @@ export class Input {
     else if (key === '-' || key === '_') c.zoom(1 / ZOOM_STEP, ...centre());
     else if (key === '[' || key === ']') this.cycleSelection(key === ']' ? 1 : -1);
     else if (key === 'g' || key === 'G') this.toggleGoalSelection();
+    else if (key === '?') c.toggleHelp();
+    else if (key === 'Escape' && c.helpShown()) c.toggleHelp(false);
     else if (key === 'Escape') c.selection = null;
     else if (key.startsWith('Arrow') && c.selection) {
       const view = c.view();
@@ -244,6 +248,7 @@ export class Input {
     if (handled) {
       e.preventDefault();
       e.stopPropagation();
+      c.viewChanged();
       c.toolbar.update();
       c.requestDraw();
     }

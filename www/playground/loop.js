@@ -134,6 +134,7 @@ export class FrameLoop {
     if (left <= Math.min(left, fit) || c.pg.finished) {
       this.seekStep = null;
       c.toolbar.update();
+      c.viewChanged();
     }
   }
 
@@ -171,6 +172,7 @@ export class FrameLoop {
       this.playing = false;
       if (converged) this.convergedAt = c.views.time;
       c.toolbar.update();
+      c.viewChanged();
     }
   }
 

@@ -32,6 +32,7 @@ export const TEMPLATE = `
       <label>θ(0) <input data-id="theta0" type="number" step="15" aria-label="θ(0) of the integral curves, degrees"> °</label>
       <label class="check full"><input data-id="sensing" type="checkbox"> R_s</label>
       <button type="button" data-id="fit" class="full" title="Fit the scenario in the view (F)">Fit</button>
+      <button type="button" data-id="help" title="The controls and keys (?)" aria-label="Help: the controls and keys">?</button>
     </span>
     <span class="group full">
       <button type="button" data-id="export-json" title="Download the scenario as JSON">Scenario JSON</button>
@@ -48,6 +49,19 @@ export const TEMPLATE = `
       <div class="overlay">
         <div class="overlay-row"><div class="clock" data-id="clock"></div><div class="title" data-id="title"></div></div>
         <div class="hint" data-id="hint"></div>
+      </div>
+      <div class="help" data-id="help-panel" role="dialog" aria-label="Controls and keys" hidden>
+        <button type="button" data-id="help-close" class="help-close" aria-label="Close the help">×</button>
+        <h3>Mouse, touch and pen</h3>
+        <p>Drag a robot, goal or obstacle to move it; click one to select it. A selected robot or goal has a round handle: drag it to turn the heading. A selected obstacle has two: its disc r_o and its ring R_o. Drag the background to pan; the wheel or two fingers zoom. Robots on top of one another: click again to pick the next. Click a plot, or drag the scrubber, to go to a time.</p>
+        <h3>Keys (anywhere in the playground but in a text field)</h3>
+        <dl class="help-keys">
+          <dt>Space</dt><dd>play / pause</dd><dt>S</dt><dd>advance 0.1 s</dd><dt>R</dt><dd>back to t = 0</dd>
+          <dt>[ ]</dt><dd>select the previous / next robot</dd><dt>G</dt><dd>switch between a robot and its goal</dd>
+          <dt>arrows</dt><dd>move the selection</dd><dt>Q E</dt><dd>turn it</dd><dt>A O</dt><dd>add a robot / an obstacle</dd>
+          <dt>Delete</dt><dd>remove the selection</dd><dt>Ctrl+Z</dt><dd>undo (Ctrl+Shift+Z, Ctrl+Y: redo)</dd>
+          <dt>+ −</dt><dd>zoom</dd><dt>F</dt><dd>fit the scenario</dd><dt>Escape</dt><dd>deselect, close this help</dd><dt>?</dt><dd>this help</dd>
+        </dl>
       </div>
       <div class="message" data-id="message" role="alert" hidden><span class="message-text" data-id="message-text"></span><span data-id="message-actions"></span><button type="button" data-id="message-close" aria-label="Dismiss the message" title="Dismiss">×</button></div>
     </div>
