@@ -373,7 +373,8 @@ await run(async ({ base, newPage }) => {
   await kv.fill('1.5');
   await kv.press('Enter');
   check(
-    (await scenarioOf(page)).params.k_v === 1.5 && (await page.locator(`${PG} [data-id="params"] .param-error`).isHidden()),
+    (await scenarioOf(page)).params.k_v === 1.5 &&
+      (await page.locator(`${PG} [data-id="params"] .param-error`).isHidden()),
     'k_v = 1.5 applies',
   );
   const vmax = page.locator(`${PG} input[name="v_max"]`);
