@@ -109,7 +109,7 @@ export function parseFragment(hash) {
 }
 
 /** Offers `blob` as a download named `filename`. */
-function download(blob, filename) {
+export function downloadBlob(blob, filename) {
   const url = URL.createObjectURL(blob);
   const a = document.createElement('a');
   a.href = url;
@@ -123,7 +123,7 @@ function download(blob, filename) {
 }
 
 /** A file name from a scenario name: letters, digits and dashes only. */
-function fileStem(name) {
+export function fileStem(name) {
   const stem = String(name)
     .toLowerCase()
     .replace(/[^a-z0-9]+/g, '-')
@@ -226,15 +226,10 @@ export async function fetchScenarioText(url) {
 /** Offers `scenario` as a JSON file that `dvf simulate` reads. */
 export function downloadScenarioJson(scenario) {
   const text = `${exactJson(scenario, 2)}\n`;
-  download(new Blob([text], { type: 'application/json' }), `${fileStem(scenario.name)}.json`);
+  downloadBlob(new Blob([text], { type: 'application/json' }), `${fileStem(scenario.name)}.json`);
 }
 
 /** Offers CSV text `pieces` (trajectoriesCsv) as a file named after `scenario`. */
 export function downloadCsv(pieces, scenario) {
-  download(new Blob(pieces, { type: 'text/csv' }), `${fileStem(scenario.name)}.csv`);
-}
-
-/** Offers the picture on `canvas` as a PNG named after the scenario `name`. */
-export function downloadCanvasPng(canvas, name) {
-  canvas.toBlob((blob) => download(blob, `${fileStem(name)}.png`), 'image/png');
+  downloadBlob(new Blob(pieces, { type: 'text/csv' }), `${fileStem(scenario.name)}.csv`);
 }

@@ -4,7 +4,7 @@
 //
 // Run: make test-e2e   (or: node tests/e2e/instrument.mjs after make build-wasm)
 
-import { readFileSync } from 'node:fs';
+import { copyFileSync, readFileSync } from 'node:fs';
 import { check, checkQuiet, EXAMPLE4, frames, join, RESULTS, run, scenarioOf, waitLoaded } from './lib.mjs';
 
 const PG = 'dvf-playground';
@@ -359,15 +359,24 @@ await run(async ({ base, newPage }) => {
     checkQuiet(phone, 'phone');
     await phone.context().close();
 
-    const narrow = await newPage({ viewport: { width: 800, height: 800 } });
-    await narrow.goto(`${base}/`);
-    await waitLoaded(narrow);
+    // An element 800 px wide (with its side panel) in a wider page, and a page 800 px wide.
+    const narrow = await newPage({ viewport: DESKTOP });
+    await narrow.goto(`${base}/embed.html`);
+    await waitLoaded(narrow, '#swap');
+    await narrow.evaluate(() => {
+      const el = document.createElement('dvf-playground');
+      el.id = 'narrow';
+      el.setAttribute('controls', '');
+      el.style.width = '800px';
+      document.body.prepend(el);
+    });
+    await waitLoaded(narrow, '#narrow');
     const cut = await narrow.evaluate((s) => {
       const root = document.querySelector(s).shadowRoot;
       return [...root.querySelectorAll('.params input')]
         .filter((e) => e.getBoundingClientRect().width < 64)
         .map((e) => `${e.name} ${e.getBoundingClientRect().width.toFixed(0)}`);
-    }, PG);
+    }, '#narrow');
     check(
       cut.length === 0,
       `at 800 px every parameter box shows six characters (narrower: ${cut.join(', ') || 'none'})`,
@@ -655,5 +664,28 @@ await run(async ({ base, newPage }) => {
     checkQuiet(copy, 'view in the copied link');
     await page.context().close();
     await copy.context().close();
+  });
+  // ---- Recording: a PNG at 4× with the title and time stamped in; a WebM video.
+  await section('recording', async () => {
+    const page = await openMain(newPage, base);
+    const cssWidth = await part(page, 'canvas').evaluate((e) => e.clientWidth);
+    await part(page, 'png-scale').selectOption('4');
+    const [png] = await Promise.all([page.waitForEvent('download'), part(page, 'export-png').click()]);
+    copyFileSync(await png.path(), join(RESULTS, 'instrument-4x.png'));
+    const bytes = readFileSync(await png.path());
+    const width = bytes.readUInt32BE(16);
+    check(width === cssWidth * 4, `the PNG at 4× is ${width} px wide for ${cssWidth} CSS px`);
+    await part(page, 'record').click();
+    await part(page, 'play').click();
+    await page.waitForFunction((s) => document.querySelector(s).cache.time > 1.5, PG);
+    const progress = await messageText(page);
+    const [video] = await Promise.all([page.waitForEvent('download'), part(page, 'record').click()]);
+    const webm = readFileSync(await video.path());
+    check(
+      webm.readUInt32BE(0) === 0x1a45dfa3 && webm.length > 1000 && /Recording: \d/.test(progress),
+      `Record makes a WebM file (${webm.length} bytes, ${video.suggestedFilename()}) and shows its progress ("${progress.slice(0, 40)}")`,
+    );
+    checkQuiet(page, 'recording');
+    await page.context().close();
   });
 });

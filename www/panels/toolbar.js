@@ -5,7 +5,6 @@
 
 import {
   csvSize,
-  downloadCanvasPng,
   downloadCsv,
   downloadScenarioJson,
   formatBytes,
@@ -14,6 +13,7 @@ import {
   trajectoriesCsv,
 } from '../io.js';
 import { addObstacleInView, addRobotInView, deleteSelection } from '../playground/actions.js';
+import { exportPng } from '../playground/record.js';
 import { DEFAULT_SPEED, SPEEDS } from '../playground/loop.js';
 import { messageOf } from '../playground/message.js';
 import { el } from './dom.js';
@@ -107,10 +107,8 @@ export class Toolbar {
       c.requestDraw();
     });
     $('export-json').addEventListener('click', () => downloadScenarioJson(c.scenario()));
-    $('export-png').addEventListener('click', () => {
-      c.painter.draw(); // the backing store holds the current frame
-      downloadCanvasPng(c.canvas, c.model.name);
-    });
+    $('export-png').addEventListener('click', () => exportPng(c, Number($('png-scale').value)));
+    $('record').addEventListener('click', () => c.recorder.toggle());
     $('export-csv').addEventListener('click', () => this.exportCsv());
     $('import').addEventListener('click', () => $('import-file').click());
     $('import-file').addEventListener('change', async () => {
@@ -236,5 +234,8 @@ export class Toolbar {
     c.$('undo').disabled = !c.history.canUndo;
     c.$('redo').disabled = !c.history.canRedo;
     c.$('delete').disabled = !c.selection;
+    const record = c.$('record');
+    record.textContent = c.recorder.active ? 'Stop' : 'Record';
+    record.setAttribute('aria-pressed', String(c.recorder.active));
   }
 }

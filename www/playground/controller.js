@@ -33,6 +33,7 @@ import { Input } from './input.js';
 import { FrameLoop } from './loop.js';
 import { messageOf } from './message.js';
 import { Painter } from './paint.js';
+import { Recorder } from './record.js';
 import { LiveViews, POSE_STRIDE, WASM_READY } from './wasm-views.js';
 
 /** A `viewchange` event waits this long (ms) for the next change (a pan is many). */
@@ -94,6 +95,7 @@ export class Controller {
     this.camera = new Camera();
     this.loop = new FrameLoop(this);
     this.painter = new Painter(this);
+    this.recorder = new Recorder(this);
     this.toolbar = new Toolbar(this);
     this.params = new ParamsPanel(this.$('params'), (key, value) => changeParam(this, key, value));
     this.results = new ResultsPanel(this);

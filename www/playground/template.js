@@ -36,7 +36,9 @@ export const TEMPLATE = `
     </span>
     <span class="group full">
       <button type="button" data-id="export-json" title="Download the scenario as JSON">Scenario JSON</button>
-      <button type="button" data-id="export-png" title="Download the picture as PNG">PNG</button>
+      <button type="button" data-id="export-png" title="Download the picture as PNG, the title and the time stamped in">PNG</button>
+      <select data-id="png-scale" aria-label="PNG size: times the canvas's size"><option value="1">1×</option><option value="2" selected>2×</option><option value="4">4×</option></select>
+      <button type="button" data-id="record" aria-pressed="false" title="Record the canvas as a WebM video (again: stop and download)">Record</button>
       <button type="button" data-id="export-csv" title="Download the whole run's trajectories as CSV">CSV</button>
       <button type="button" data-id="import" title="Load a scenario JSON file">Import…</button>
       <input data-id="import-file" type="file" accept=".json,application/json" hidden>
