@@ -688,4 +688,28 @@ await run(async ({ base, newPage }) => {
     checkQuiet(page, 'recording');
     await page.context().close();
   });
+  // ---- Guidance: a warning beside gains known to fail.
+  await section('gain warnings', async () => {
+    const page = await openMain(newPage, base);
+    const warning = part(page, 'gain-warning');
+    const none = await warning.isHidden();
+    const ka = page.locator(`${PG} input[name="k_a"]`);
+    await ka.fill('1.5');
+    await ka.press('Enter');
+    const stall = (await warning.isVisible()) && (await warning.textContent()).includes('k_a ≤ 2·k_ω');
+    const kv = page.locator(`${PG} input[name="k_v"]`);
+    await kv.fill('3');
+    await kv.press('Enter');
+    const lag = (await warning.textContent()).includes('k_v > k_ω');
+    await part(page, 'canvas').focus();
+    await page.keyboard.press('Control+z');
+    await page.keyboard.press('Control+z');
+    const gone = await warning.isHidden();
+    check(
+      none && stall && lag && gone,
+      'k_a ≤ 2·k_ω and k_v > k_ω are warned of beside the gains, and the warning goes with them',
+    );
+    checkQuiet(page, 'gain warnings');
+    await page.context().close();
+  });
 });

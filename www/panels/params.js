@@ -97,7 +97,31 @@ export class ParamsPanel {
     this.error = el('p', '', 'param-error');
     this.error.setAttribute('role', 'alert');
     this.error.hidden = true;
-    form.append(this.error);
+    this.warning = el('p', '', 'param-warning');
+    this.warning.dataset.id = 'gain-warning';
+    this.warning.hidden = true;
+    form.append(this.error, this.warning);
+  }
+
+  /**
+   * Warns of gains known to fail (docs/notes-on-the-paper.md, 3.2, and README.md,
+   * Parameters): k_a ≤ 2·k_ω lets a robot stall where the field is perpendicular to
+   * its heading; k_v > k_ω leaves the attitude loop slower than the position loop.
+   */
+  warn(p) {
+    const notes = [];
+    if (p.k_a <= 2 * p.k_omega) {
+      notes.push(
+        `k_a ≤ 2·k_ω (${p.k_a} ≤ ${2 * p.k_omega}): a robot can stall where the field is perpendicular to its heading.`,
+      );
+    }
+    if (p.k_v > p.k_omega) {
+      notes.push(
+        `k_v > k_ω (${p.k_v} > ${p.k_omega}): the heading lags the position; robots may end with a large heading error.`,
+      );
+    }
+    this.warning.textContent = notes.join(' ');
+    this.warning.hidden = notes.length === 0;
   }
 
   /** After `apply`: a refusal keeps the typed text and shows why; a value taken clears all. */
@@ -140,5 +164,6 @@ export class ParamsPanel {
     }
     this.error.textContent = '';
     this.error.hidden = true;
+    this.warn(s.params);
   }
 }
