@@ -5,6 +5,7 @@
 // Run: make test-e2e   (or: node tests/e2e/instrument.mjs after make build-wasm)
 
 import { copyFileSync, readFileSync } from 'node:fs';
+import * as lib from './lib.mjs';
 import { check, checkQuiet, EXAMPLE4, frames, join, RESULTS, run, scenarioOf, waitLoaded } from './lib.mjs';
 
 const PG = 'dvf-playground';
@@ -710,6 +711,37 @@ await run(async ({ base, newPage }) => {
       'k_a ≤ 2·k_ω and k_v > k_ω are warned of beside the gains, and the warning goes with them',
     );
     checkQuiet(page, 'gain warnings');
+    await page.context().close();
+  });
+  // ---- Comparison: a run pinned as a ghost, the scene changed, both runs and results.
+  await section('comparison', async () => {
+    const page = await openMain(newPage, base);
+    await page.waitForSelector(`${PG} [data-id="results"][data-ready]`);
+    const before = await lib.canvasStats(page);
+    await part(page, 'pin').click();
+    await page.waitForFunction(
+      (s) => document.querySelector(s).shadowRoot.querySelector('[data-id="pin"]').textContent === 'Unpin',
+      PG,
+    );
+    await frames(page);
+    const pinned = await lib.canvasStats(page);
+    const drawn = lib.changedFraction(before, pinned);
+    await page.locator(`${PG} select[name="avoidance"]`).selectOption('paper');
+    await page.waitForSelector(`${PG} [data-id="results"][data-ready]`);
+    const ghostText = await part(page, 'pinned').textContent();
+    const currentText = await part(page, 'results').textContent();
+    await page.screenshot({ path: join(RESULTS, 'instrument-comparison.png') });
+    check(
+      drawn > 0.002 &&
+        ghostText.includes('Pinned run') &&
+        /robots converged/.test(ghostText) &&
+        /robots converged/.test(currentText),
+      `a pinned run shows faded (${(drawn * 100).toFixed(1)} % of blocks) and its results beside the changed run's`,
+    );
+    await part(page, 'pin').click();
+    await frames(page);
+    check(await part(page, 'pinned').isHidden(), 'Unpin forgets the pinned run');
+    checkQuiet(page, 'comparison');
     await page.context().close();
   });
 });

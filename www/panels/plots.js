@@ -3,6 +3,7 @@
 // heading errors. The past comes from the trail rings (solid), the future from the prediction
 // (dashed).
 
+import { GHOST_COLOUR } from '../playground/ghost.js';
 import { POSE_STRIDE } from '../playground/wasm-views.js';
 import { fitCanvas } from '../render/canvas.js';
 
@@ -16,6 +17,7 @@ const NOW_COLOUR = '#2563eb';
 const PLOT_MARGIN_PX = { left: 34, right: 30, top: 16, bottom: 16 };
 export const POSITION_COLOUR = '#0f766e';
 export const HEADING_COLOUR = '#d97706';
+
 /** About this many ticks per axis (ends included). */
 const TICKS = 5;
 /** Dashes of the predicted part of a line and of the safe distance. */
@@ -119,7 +121,7 @@ function plotSeries(scene, robot, series) {
 }
 
 /**
- * @typedef {{points: Series, colour: string, axis: 'left' | 'right', dashed?: boolean}} Line
+ * @typedef {{points: Series, colour: string, axis: 'left' | 'right', dashed?: boolean, ghost?: boolean}} Line
  * @typedef {{
  *   title: string, duration: number, time: number, lines: Line[],
  *   hline?: {value: number, colour?: string, label: string} | null,
@@ -225,8 +227,8 @@ function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, ri
     ctx.moveTo(sx(t[0]), sy(v[0], l.axis));
     for (let k = 1; k < count; k++) ctx.lineTo(sx(t[k]), sy(v[k], l.axis));
     ctx.setLineDash(l.dashed ? DASH_PX : []);
-    ctx.globalAlpha = l.dashed ? 0.6 : 1;
-    ctx.lineWidth = 1.5;
+    ctx.globalAlpha = l.ghost ? 0.45 : l.dashed ? 0.6 : 1;
+    ctx.lineWidth = l.ghost ? 3 : 1.5;
     ctx.strokeStyle = l.colour;
     ctx.stroke();
   }
@@ -284,8 +286,11 @@ export class PlotsPanel {
     return Math.min(1, Math.max(0, f)) * this.duration;
   }
 
-  /** Draws both plots for `scene` (render/scene.js) and inspected robot `robot`. */
-  draw(scene, robot) {
+  /**
+   * Draws both plots for `scene` (render/scene.js) and inspected robot `robot`, with the
+   * pinned run `ghost` (playground/ghost.js) faded, if any.
+   */
+  draw(scene, robot, ghost = null) {
     const { ctx, width, height } = fitCanvas(this.canvas);
     ctx.clearRect(0, 0, width, height);
     const s = scene.scenario;
@@ -300,6 +305,15 @@ export class PlotsPanel {
             { points: series.pastPair, colour: this.colours.pair, axis: 'left' },
             { points: series.futurePair, colour: this.colours.pair, axis: 'left', dashed: true },
           ];
+    const ghostPair = new Series();
+    const ghostPos = new Series();
+    if (ghost) {
+      for (let k = 0; k < ghost.samples; k++) {
+        if (Number.isFinite(ghost.minPair[k])) ghostPair.push(ghost.times[k], ghost.minPair[k]);
+        if (robot < ghost.robots) ghostPos.push(ghost.times[k], ghost.positionError[robot * ghost.samples + k]);
+      }
+      if (pairLines.length) pairLines.push({ points: ghostPair, colour: GHOST_COLOUR, axis: 'left', ghost: true });
+    }
     this.duration = scene.duration;
     const top = drawPlot(
       ctx,
@@ -326,6 +340,9 @@ export class PlotsPanel {
           { points: series.futurePos, colour: POSITION_COLOUR, axis: 'left', dashed: true },
           { points: series.pastHead, colour: HEADING_COLOUR, axis: 'right' },
           { points: series.futureHead, colour: HEADING_COLOUR, axis: 'right', dashed: true },
+          ...(ghost
+            ? [{ points: ghostPos, colour: GHOST_COLOUR, axis: /** @type {'left'} */ ('left'), ghost: true }]
+            : []),
         ],
       },
       this.colours,
@@ -344,6 +361,7 @@ export function buildPlotsLegend(list) {
     ['heading error (rad, right axis)', HEADING_COLOUR, false],
     ['dashed: predicted from now on', 'var(--pg-muted)', true],
     ['"now"; click a plot to go to a time', NOW_COLOUR, false],
+    ['wide, faded: the pinned run', GHOST_COLOUR, false],
   ];
   list.replaceChildren();
   for (const [label, colour, dashed] of entries) {

@@ -5,6 +5,7 @@
 // worker, playground/results-worker.js) after each change; a change made meanwhile starts it
 // again. Runs larger than AUTO_ROBOT_STEPS wait for the Compute button.
 
+import { togglePin } from '../playground/ghost.js';
 import { messageOf } from '../playground/message.js';
 import { el } from './dom.js';
 
@@ -17,6 +18,19 @@ const SETTLE_MS = 300;
 
 /** @param {number | null} v @param {number} digits */
 const num = (v, digits = 3) => (v == null ? '—' : Number(v).toPrecision(digits));
+
+/** The report's figures, a line each; `safeRadius` (m) adds 2·r_ij beside the pair distance. */
+function summary(report, safeRadius) {
+  const converged = report.robots.filter((r) => r.converged_at != null);
+  const last = Math.max(...converged.map((r) => r.converged_at));
+  const safe = safeRadius == null ? '' : ` (2·r_ij = ${num(2 * safeRadius)} m)`;
+  return [
+    `${converged.length} of ${report.robots.length} robots converged${converged.length ? `, the last at ${last.toFixed(2)} s` : ''} (run of ${report.time} s, ${report.steps} steps)`,
+    `min distance between two robots: ${report.min_pair_distance == null ? 'none' : `${num(report.min_pair_distance)} m`}${safe}`,
+    `min clearance to an obstacle: ${report.min_obstacle_clearance == null ? 'none' : `${num(report.min_obstacle_clearance)} m`}`,
+    `violations: ${report.violations}`,
+  ];
+}
 
 export class ResultsPanel {
   /** @param {import('../playground/controller.js').Controller} controller */
@@ -31,6 +45,19 @@ export class ResultsPanel {
     /** @type {ReturnType<typeof setTimeout> | null} */
     this.timer = null;
     controller.$('copy-results').addEventListener('click', () => this.copy());
+    controller.$('pin').addEventListener('click', () => togglePin(controller));
+  }
+
+  /** The pinned run (playground/ghost.js): its figures above the current run's, and the Pin button. */
+  showGhost() {
+    const c = this.c;
+    const box = c.$('pinned');
+    const pin = c.$('pin');
+    pin.textContent = c.ghost ? 'Unpin' : c.pinning ? 'Pinning…' : 'Pin';
+    box.hidden = !c.ghost;
+    if (!c.ghost) return;
+    const lines = summary(c.ghost.report, null);
+    box.replaceChildren(el('p', `Pinned run (faded), ${c.ghost.name}:`, 'muted'), ...lines.map((t) => el('p', t)));
   }
 
   /** The scenario changed: its results are computed again (after SETTLE_MS). */
@@ -89,15 +116,7 @@ export class ResultsPanel {
   show(report) {
     this.report = report;
     this.c.$('copy-results').disabled = false;
-    const s = this.c.model;
-    const converged = report.robots.filter((r) => r.converged_at != null);
-    const last = Math.max(...converged.map((r) => r.converged_at));
-    const lines = [
-      `${converged.length} of ${report.robots.length} robots converged${converged.length ? `, the last at ${last.toFixed(2)} s` : ''} (run of ${report.time} s, ${report.steps} steps)`,
-      `min distance between two robots: ${report.min_pair_distance == null ? 'none' : `${num(report.min_pair_distance)} m`} (2·r_ij = ${num(2 * s.params.safe_radius)} m)`,
-      `min clearance to an obstacle: ${report.min_obstacle_clearance == null ? 'none' : `${num(report.min_obstacle_clearance)} m`}`,
-      `violations: ${report.violations}`,
-    ];
+    const lines = summary(report, this.c.model.params.safe_radius);
     const table = el('table', undefined, 'results-table');
     const head = el('tr');
     for (const h of ['robot', 'converged at (s)', 'position error (m)', 'heading error (rad)'])

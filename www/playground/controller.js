@@ -96,6 +96,10 @@ export class Controller {
     this.loop = new FrameLoop(this);
     this.painter = new Painter(this);
     this.recorder = new Recorder(this);
+    /** @type {import('./ghost.js').Ghost | null} the pinned run (ghost.js) */
+    this.ghost = null;
+    /** @type {Worker | null} the worker making the run to pin */
+    this.pinning = null;
     this.toolbar = new Toolbar(this);
     this.params = new ParamsPanel(this.$('params'), (key, value) => changeParam(this, key, value));
     this.results = new ResultsPanel(this);

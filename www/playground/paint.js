@@ -6,6 +6,7 @@ import { showInspected } from '../panels/inspected.js';
 import { PlotsPanel } from '../panels/plots.js';
 import { fitCanvas } from '../render/canvas.js';
 import { drawScene } from '../render/scene.js';
+import { drawGhost } from './ghost.js';
 import { SpriteLayer } from '../render/sprites.js';
 import { FIELD_SPACING_PX, setPalette } from '../render/theme.js';
 import { TRAIL_SETTLE_MS, TrailLayer } from '../render/trails.js';
@@ -95,7 +96,7 @@ export class Painter {
         c.requestDraw();
       }, TRAIL_SETTLE_MS);
     }
-    drawScene(ctx, view, scene);
+    drawScene(ctx, view, scene, c.ghost ? () => drawGhost(ctx, view, c.ghost) : null);
     const loop = c.loop;
     const slowed =
       loop.playing && loop.rate < loop.speed * 0.995
@@ -117,7 +118,7 @@ export class Painter {
     // Free text from the scenario: textContent only, never HTML.
     c.$('title').textContent = c.model.name;
     if (c.host.hasAttribute('controls')) {
-      this.plots.draw(scene, c.focusRobot);
+      this.plots.draw(scene, c.focusRobot, c.ghost);
       showInspected(c.$('robot-info'), c.focusRobot, c.model.robots.length, scene.status);
       c.selectionPanel.update();
     }

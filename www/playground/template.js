@@ -75,7 +75,8 @@ export const TEMPLATE = `
         <ul class="plots-legend" data-id="plots-legend"></ul>
       </section>
       <section>
-        <h3>Results <button type="button" data-id="copy-results" class="small" disabled title="Copy the report (the JSON of dvf simulate)">Copy JSON</button></h3>
+        <h3>Results <button type="button" data-id="copy-results" class="small" disabled title="Copy the report (the JSON of dvf simulate)">Copy JSON</button><button type="button" data-id="pin" class="small" title="Pin this run as a ghost to compare with the next (faded on the canvas and in the plots)">Pin</button></h3>
+        <div class="results pinned" data-id="pinned" hidden></div>
         <div class="results" data-id="results"></div>
       </section>
       <section>
