@@ -26,7 +26,7 @@ const PKG = join(OUT, 'dvf-playground');
 const NAME = 'dvf-playground';
 
 /** The element's own files and folders, copied as they are (paths relative to www/). */
-const ELEMENT_FILES = ['dvf-playground.js', 'dvf-playground.d.ts', 'playground.css', 'io.js'];
+const ELEMENT_FILES = ['dvf-playground.js', 'dvf-playground.d.ts', 'playground.css', 'io.js', 'exact-json.js'];
 const ELEMENT_DIRS = ['playground', 'render', 'panels'];
 /** What of wasm-pack's output the package needs (not its package.json or README). */
 const PKG_FILES = ['dvf.js', 'dvf.d.ts', 'dvf_bg.wasm', 'dvf_bg.wasm.d.ts'];
@@ -48,11 +48,40 @@ copyFileSync(join(ROOT, 'package', 'README.md'), join(PKG, 'README.md'));
 copyFileSync(join(ROOT, 'LICENSE'), join(PKG, 'LICENSE'));
 writeFileSync(join(PKG, 'dvf-playground.inline.d.ts'), "export * from './dvf-playground.js';\n");
 
+/** wasm-pack's default in pkg/dvf.js (the element always names the module itself). */
+const BINDINGS_DEFAULT = "new URL('dvf_bg.wasm', import.meta.url)";
+/** The results' worker as www/playground/wasm-views.js starts it (a file beside it). */
+const WORKER_FILE = "new Worker(new URL('./results-worker.js', import.meta.url), { type: 'module' })";
+
+/**
+ * For the single file: pkg/dvf.js's own default dropped, so that the module is inlined once
+ * (through wasm-views.js, which hands it to the worker too); and the results' worker inlined
+ * (Vite's `?worker&inline`: a Blob), not a file beside it.
+ * @param {boolean} main the element's bundle (else the worker's)
+ */
+const singleFile = (main) => ({
+  name: 'dvf-single-file',
+  enforce: /** @type {const} */ ('pre'),
+  transform(code, id) {
+    const swap = (from, to) => {
+      if (!code.includes(from)) throw new Error(`${id} no longer holds ${from}: update package/build.mjs`);
+      return code.replace(from, to);
+    };
+    if (id.endsWith('/pkg/dvf.js')) return swap(BINDINGS_DEFAULT, 'undefined');
+    if (main && id.endsWith('/playground/wasm-views.js')) {
+      return `import RunWorker from './results-worker.js?worker&inline';\n${swap(WORKER_FILE, 'new RunWorker()')}`;
+    }
+    return null;
+  },
+});
+
 // The single-file variant: library mode inlines every asset the modules point at with
 // `new URL('…', import.meta.url)` (the wasm module, the stylesheet) as a data URL.
 await build({
   configFile: false,
   logLevel: 'warn',
+  plugins: [singleFile(true)],
+  worker: { format: 'es', plugins: () => [singleFile(false)] },
   build: {
     outDir: PKG,
     emptyOutDir: false,
@@ -63,6 +92,7 @@ await build({
 const inlined = readFileSync(join(PKG, INLINE), 'utf8');
 const wasmCopies = inlined.split('data:application/wasm;base64,').length - 1;
 if (wasmCopies !== 1) throw new Error(`${INLINE} holds the wasm module ${wasmCopies} times, not once`);
+if (existsSync(join(PKG, 'assets'))) throw new Error(`${INLINE} needs files beside it (${join(PKG, 'assets')})`);
 
 const manifest = {
   name: NAME,

@@ -155,7 +155,7 @@ export interface DvfPlaygroundAttributes {
   readonly?: boolean;
   /** Present: start playing once loaded; `visible`: play while on screen, pause when scrolled out. */
   autoplay?: boolean | 'visible';
-  /** Present: start over from t = 0 at the end of the run. */
+  /** Present: start over from t = 0 at the end of the run (t = duration, or every robot at its goal). */
   loop?: boolean;
   /** Show the state at this time (s) on load, simulated from t = 0. */
   time?: number;
@@ -169,6 +169,8 @@ export interface DvfPlaygroundAttributes {
   theta0?: number;
   /** Present: draw the sensing circles `R_s`. */
   sensing?: boolean;
+  /** `light` or `dark` forces a theme; absent: the system's (`prefers-color-scheme`). */
+  theme?: 'light' | 'dark';
 }
 
 /** What a frame reads of the live simulation: counters, and arrays as views into wasm memory. */
@@ -267,8 +269,15 @@ export declare class DvfPlayground extends HTMLElement {
   readonly time: number;
   /** Whether the clock runs. */
   readonly playing: boolean;
-  /** Shows `text` (as text, never HTML) in the message bar; an empty text hides it. */
-  showMessage(text: string): void;
+  /**
+   * Shows `text` (as text, never HTML) over the canvas until the user acts; an empty text hides
+   * it. `info`: a notice rather than an error; `actions`: buttons beside it, `[label, run]`.
+   */
+  showMessage(text: string, options?: { info?: boolean; actions?: [string, () => void][] }): void;
+  /** What the view shows (field overlay, θ(0), sensing, inspected robot, time, box in view). */
+  viewState(): ViewState | null;
+  /** Shows a view (any of its fields; invalid ones are left as they are). */
+  setViewState(state: Partial<ViewState>): void;
   /** Resolves once the first scene is shown, or its failure message (then `scenario()` is null). */
   readonly loaded: Promise<void>;
   /**
@@ -301,6 +310,8 @@ export declare class DvfPlayground extends HTMLElement {
   readonly fieldMode: FieldMode | null;
   /** The inspected robot. */
   focusRobot: number | null;
+  /** The two plots' geometry as last drawn: the time axis (CSS px), the "now" line, the ticks. */
+  readonly plotGeometry: PlotGeometry[] | null;
 
   addEventListener<K extends keyof DvfPlaygroundEventMap>(
     type: K,
@@ -318,14 +329,39 @@ export declare class DvfPlayground extends HTMLElement {
 export interface DvfPlaygroundEventMap extends HTMLElementEventMap {
   /** After each edit. */
   change: CustomEvent<{ kind: ChangeKind }>;
-  /** After the clock moved (a playing frame that stepped, `step()`, `seek()`). */
+  /** After the clock moved (a playing frame that stepped, `step()`, `seek()`, the scrubber). */
   tick: CustomEvent<{ time: number }>;
-  /** The run reached its end. */
+  /** The run reached its end: t = duration, or every robot at its goal (the clock stops). */
   finished: CustomEvent<{ time: number }>;
+  /** After the view changed (display, camera, inspected robot, the clock at rest). */
+  viewchange: CustomEvent;
 }
 
 declare global {
   interface HTMLElementTagNameMap {
     'dvf-playground': DvfPlayground;
   }
+}
+
+/** One plot's geometry (panels/plots.js), in the plots canvas's CSS px. */
+export interface PlotGeometry {
+  x0: number;
+  x1: number;
+  nowX: number;
+  timeTicks: number[];
+  valueTicks: number[];
+}
+
+/** What a view shows, for a link: see `DvfPlayground.viewState`. */
+export interface ViewState {
+  field: FieldMode;
+  /** θ(0) of the integral curves (degrees). */
+  theta0: number;
+  sensing: boolean;
+  /** The inspected robot, from 0. */
+  robot: number;
+  /** The time (s). */
+  time: number;
+  /** The world box in view ([xmin, ymin, xmax, ymax], m) once panned or zoomed, else null. */
+  box: [number, number, number, number] | null;
 }

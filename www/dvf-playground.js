@@ -21,7 +21,9 @@
 // Attributes (a change applies at once):
 //   preset    a preset name (default: the crate's default preset); `crowd-N` included
 //   src       URL of a scenario JSON file, resolved against the page (not this module);
-//             takes precedence over `preset`
+//             takes precedence over `preset`. A bad file (missing, an HTML page, an invalid
+//             scenario) or an unknown preset shows a message that says why, and it stays
+//             (no other scene instead: scenario() is null) until a scene loads
 //   controls  present: the full toolbar and side panels, and the scene can be edited; absent:
 //             play, step, reset and the field menu only, nothing to drag, and the wheel zooms
 //             only once the canvas is focused (or with Ctrl)
@@ -30,7 +32,8 @@
 //             the toolbar's play, pause and reset only (and the plots with `controls`)
 //   autoplay  present: start playing once loaded; `autoplay="visible"`: play while on screen
 //             (IntersectionObserver), pause when scrolled out
-//   loop      present: start over from t = 0 at the end of the run
+//   loop      present: start over from t = 0 at the end of the run (t = duration, or every
+//             robot at its goal)
 //   time      show the state at this time (s) on load: simulated from t = 0 up to there
 //   loading   `lazy`: load the scene only once the element comes near the viewport
 //   wasm      URL of dvf_bg.wasm (resolved against the page), read by the first element that
@@ -38,6 +41,8 @@
 //   field     `arrows` (default), `curves` or `none`
 //   theta0    θ(0) of the integral curves, in degrees (default 90)
 //   sensing   present: draw the sensing circles R_s
+//   theme     `light` or `dark` forces a theme; absent: the system's (prefers-color-scheme).
+//             The colours are custom properties `--dvf-…` (playground.css lists them)
 //
 // Methods:
 //   load(scenario)        a scenario object or JSON text as a new document (t = 0, view fitted,
@@ -56,8 +61,22 @@
 //                         paused; returns the time reached; throws for a t that is no number
 //   worldToScreen(x, y)   page coordinates {x, y} (CSS px, like pageX/pageY) of world point
 //                         (x, y) in metres, for overlays
-//   showMessage(text)     shows text (as text, never HTML) in the element's message bar; an
-//                         empty text hides it (www/main.js reports bad links with it)
+//   showMessage(text, options)
+//                         shows text (as text, never HTML) over the canvas until the user acts
+//                         (an edit, a load, its × button); an empty text hides it. Options:
+//                         `info` (a notice, not an error), `actions` (buttons, [label, run]
+//                         pairs). www/main.js reports bad links and links too long with it
+//
+//   viewState()           what the view shows: {field, theta0 (degrees), sensing, robot (the
+//                         inspected, from 0), time (s), box ([xmin, ymin, xmax, ymax] in view
+//                         once panned or zoomed, else null)}; null before the first scene
+//   setViewState(state)   shows such a view (any of its fields; invalid ones are left as they
+//                         are; a time is gone to as a seek). www/main.js keeps it in the link
+//
+// Keys: handled anywhere inside the element (not while typing in a field); a key the element
+// handles stops there (stopPropagation and preventDefault): it never reaches the page. A
+// figure that is not an editor (no `controls` or `editable`) handles the clock's, the view's
+// and the help's keys only; a `readonly` one none: every key reaches the page.
 //
 // Properties:
 //   loaded                a promise that resolves once the first scene is shown (or, when it
@@ -73,8 +92,12 @@
 //                         `obstacle-influence`, `add-robot`, `add-obstacle`, `delete`,
 //                         `params`, `preset`, `import`, `undo` or `redo`
 //   tick                  after the clock moved (each playing frame that stepped, step(),
-//                         seek()); `event.detail.time` is the time now (s)
-//   finished              the run reached its end (`event.detail.time`)
+//                         seek(), each slice of the scrubber's seek); `event.detail.time` is
+//                         the time now (s)
+//   finished              the run reached its end: t = duration, or every robot at its goal
+//                         (where the playing clock stops); `event.detail.time`
+//   viewchange            after the view changed (field overlay, θ(0), sensing circles,
+//                         inspected robot, pan or zoom, the clock paused, a seek or a step)
 //
 // Diagnostics, for the end-to-end tests and benchmarks (not a stable API; null before the
 // first scene):
@@ -92,6 +115,7 @@
 //   stepMs                the mean wall time of one step (ms), for the step budget
 //   fieldMode             the field overlay shown: `arrows`, `curves` or `none`
 //   focusRobot            the inspected robot (its field, plots and line); settable
+//   plotGeometry          the two plots as last drawn: time axis ends, "now" line, ticks
 //   shadowRoot            open: the parts of the template (playground/template.js) are found by
 //                         their `data-id` (`canvas`, `message`, `clock`, `title`, `preset`,
 //                         `crowd-n`, `undo`, `export-json`, `import-file`, …), the parameters by
@@ -124,6 +148,7 @@ export class DvfPlayground extends Base {
       'field',
       'theta0',
       'sensing',
+      'theme',
       'time',
       'controls',
       'editable',
@@ -210,7 +235,13 @@ export class DvfPlayground extends Base {
 
   attributeChangedCallback(name, oldValue, value) {
     const c = this.#controller;
-    if (!this.#started || !c?.views || oldValue === value) return;
+    if (oldValue === value) return;
+    // The theme applies at once, scene or not (a connected element has read it already).
+    if (name === 'theme') {
+      if (c?.connected) c.readTheme();
+      return;
+    }
+    if (!this.#started || !c?.views) return;
     if (name === 'preset' && value) this.#loadPreset(value);
     else if (name === 'src' && value) c.loadUrl(value);
     else if (name === 'time') this.#seekAttribute();
@@ -254,8 +285,8 @@ export class DvfPlayground extends Base {
     if (!c?.pg || !this.hasAttribute('autoplay')) return;
     if (this.getAttribute('autoplay') !== 'visible') c.play();
     else if (!this.#onScreen) c.pause();
-    // Back on screen: plays on, but a finished run starts over only with `loop`.
-    else if (!c.pg.finished || c.looping) c.play();
+    // Back on screen: plays on, but a run at its end starts over only with `loop`.
+    else if (!c.atEnd() || c.looping) c.play();
   }
 
   /** Loads the scene the attributes ask for, then resolves `loaded`. */
@@ -368,8 +399,16 @@ export class DvfPlayground extends Base {
     return this.#connected().worldToScreen(x, y);
   }
 
-  showMessage(text) {
-    this.#controller?.showMessage(text);
+  showMessage(text, options) {
+    this.#controller?.showMessage(text, options);
+  }
+
+  viewState() {
+    return this.#controller?.pg ? this.#controller.viewState() : null;
+  }
+
+  setViewState(state) {
+    this.#controller?.setViewState(state);
   }
 
   // ---- diagnostics --------------------------------------------------------------------------
@@ -408,6 +447,10 @@ export class DvfPlayground extends Base {
 
   get focusRobot() {
     return this.#controller?.focusRobot ?? null;
+  }
+
+  get plotGeometry() {
+    return this.#controller?.pg ? this.#controller.painter.plots.geometry : null;
   }
 
   set focusRobot(i) {

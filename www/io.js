@@ -3,51 +3,113 @@
 // untrusted text: it is size-capped, parsed as JSON data only and checked by the core (which
 // names the offending field); nothing of it is ever HTML.
 
-import { Run } from './pkg/dvf.js';
-import { SAMPLE_STRIDE } from './playground/wasm-views.js';
+import { exactJson } from './exact-json.js';
+import { Playground } from './pkg/dvf.js';
+import { POSE_STRIDE, STATUS, STATUS_STRIDE, wasmReady } from './playground/wasm-views.js';
 
 /** The fragment that holds a scenario starts with this. */
 export const FRAGMENT_PREFIX = '#s=';
-/** Longest fragment, fetched or imported file accepted (characters / bytes). */
-export const MAX_SCENARIO_BYTES = 64 * 1024;
+/** Longest fragment accepted or written (characters): what links survive being pasted. */
+export const MAX_LINK_CHARS = 64 * 1024;
+/**
+ * Largest scenario file imported or fetched (bytes): the edited 10,000-robot crowd, the
+ * largest scene the page shows, is about 2.4 MB as the page writes it.
+ */
+export const MAX_FILE_BYTES = 32 * 1024 * 1024;
+/**
+ * Largest CSV the page writes (bytes, estimated up front): larger runs are refused with their
+ * size and left to the command line (`dvf simulate --csv`).
+ */
+export const MAX_CSV_BYTES = 64 * 1024 * 1024;
+/** The CSV's header: the command line's (`dvf simulate --csv`, src/bin/dvf.rs). */
+export const CSV_HEADER = 't,robot,x,y,theta,v,omega';
+/** Bytes per CSV row, for the estimate: seven numbers at full precision and their commas. */
+const CSV_ROW_BYTES = 100;
+/** A CSV export works this long at a time (ms), then lets the page draw its progress. */
+const CSV_SLICE_MS = 30;
 
 /** The fragment for a scenario object: `#s=` and the URI-encoded compact JSON. */
 export function fragmentFor(scenario) {
-  return FRAGMENT_PREFIX + encodeURIComponent(JSON.stringify(scenario));
+  return FRAGMENT_PREFIX + encodeURIComponent(exactJson(scenario));
+}
+
+/** The field overlays a link may ask for. */
+const LINK_FIELDS = ['arrows', 'curves', 'none'];
+
+/**
+ * The view's part of a link for `v` (the element's viewState()): `&field=…&theta0=…&sensing=1
+ * &robot=…&t=…&view=x0,y0,x1,y1`, each only when it is not the default (the robot numbered from
+ * 1, as on the page).
+ * @param {import('./dvf-playground.js').ViewState | null} v
+ */
+export function viewSuffix(v) {
+  if (!v) return '';
+  const parts = [];
+  if (v.field !== 'arrows') parts.push(`field=${v.field}`);
+  if (v.theta0 !== 90) parts.push(`theta0=${v.theta0}`);
+  if (v.sensing) parts.push('sensing=1');
+  if (v.robot > 0) parts.push(`robot=${v.robot + 1}`);
+  if (v.time > 0) parts.push(`t=${Number(v.time.toFixed(6))}`);
+  if (v.box) parts.push(`view=${v.box.map((x) => Number(x.toPrecision(7))).join(',')}`);
+  return parts.map((p) => `&${p}`).join('');
+}
+
+/** The view a link's `&key=value` parts ask for (viewSuffix's); unknown or bad parts are left out. */
+function parseView(parts) {
+  /** @type {Partial<import('./dvf-playground.js').ViewState>} */
+  const v = {};
+  for (const part of parts) {
+    const [key, value = ''] = part.split('=');
+    const n = Number(value);
+    if (key === 'field' && LINK_FIELDS.includes(value)) v.field = /** @type {any} */ (value);
+    else if (key === 'theta0' && value !== '' && Number.isFinite(n)) v.theta0 = n;
+    else if (key === 'sensing') v.sensing = value === '1';
+    else if (key === 'robot' && Number.isInteger(n) && n >= 1) v.robot = n - 1;
+    else if (key === 't' && value !== '' && Number.isFinite(n) && n >= 0) v.time = n;
+    else if (key === 'view') {
+      const box = value.split(',').map(Number);
+      if (box.length === 4 && box.every(Number.isFinite)) v.box = /** @type {any} */ (box);
+    }
+  }
+  return Object.keys(v).length ? v : null;
 }
 
 /**
  * What a fragment asks for: `{kind: 'none'}`, `{kind: 'preset', name}` for `#name`, or
- * `{kind: 'scenario', text}` for `#s=…`. Throws an Error with a message a person can act on
- * when the fragment is too long or not decodable; the JSON itself is checked by the core.
+ * `{kind: 'scenario', text}` for `#s=…`, with `view` (parseView) when it has a view's part.
+ * Throws an Error with a message a person can act on when the fragment is too long or not
+ * decodable; the JSON itself is checked by the core.
  */
 export function parseFragment(hash) {
   if (!hash || hash === '#') return { kind: 'none' };
-  if (hash.length > MAX_SCENARIO_BYTES) {
+  if (hash.length > MAX_LINK_CHARS) {
     throw new Error(
-      `link: the scenario in the address is ${hash.length} characters long; at most ${MAX_SCENARIO_BYTES} are accepted`,
+      `link: the scenario in the address is ${hash.length} characters long; at most ${MAX_LINK_CHARS} are accepted`,
     );
   }
-  if (hash.startsWith(FRAGMENT_PREFIX)) {
+  // A scenario's JSON is URI-encoded, so the first `&` starts the view's part.
+  const [scene, ...rest] = hash.split('&');
+  const view = parseView(rest);
+  if (scene.startsWith(FRAGMENT_PREFIX)) {
     let text;
     try {
-      text = decodeURIComponent(hash.slice(FRAGMENT_PREFIX.length));
+      text = decodeURIComponent(scene.slice(FRAGMENT_PREFIX.length));
     } catch {
       throw new Error('link: the scenario in the address is not correctly percent-encoded (was it cut short?)');
     }
-    return { kind: 'scenario', text };
+    return { kind: 'scenario', text, view };
   }
   let name;
   try {
-    name = decodeURIComponent(hash.slice(1));
+    name = decodeURIComponent(scene.slice(1));
   } catch {
     throw new Error('link: the address fragment is not correctly percent-encoded');
   }
-  return { kind: 'preset', name };
+  return { kind: 'preset', name, view };
 }
 
 /** Offers `blob` as a download named `filename`. */
-function download(blob, filename) {
+export function downloadBlob(blob, filename) {
   const url = URL.createObjectURL(blob);
   const a = document.createElement('a');
   a.href = url;
@@ -61,7 +123,7 @@ function download(blob, filename) {
 }
 
 /** A file name from a scenario name: letters, digits and dashes only. */
-function fileStem(name) {
+export function fileStem(name) {
   const stem = String(name)
     .toLowerCase()
     .replace(/[^a-z0-9]+/g, '-')
@@ -69,60 +131,105 @@ function fileStem(name) {
   return stem.slice(0, 60) || 'scenario';
 }
 
+/** `bytes` as a person reads it: "3.2 MB". */
+export function formatBytes(bytes) {
+  if (bytes >= 1e9) return `${(bytes / 1e9).toFixed(1)} GB`;
+  if (bytes >= 1e6) return `${(bytes / 1e6).toFixed(1)} MB`;
+  return `${Math.max(1, Math.round(bytes / 1e3))} KB`;
+}
+
+/** The rows and the estimated bytes of the CSV of a whole run of `scenario`. */
+export function csvSize(scenario) {
+  const rows = (Math.round(scenario.duration / scenario.dt) + 1) * scenario.robots.length;
+  return { rows, bytes: rows * CSV_ROW_BYTES };
+}
+
 /**
- * The trajectories of a whole run of `scenario` from its starts as CSV, one row per robot and
- * sample: `robot,t,x,y,theta,v,omega` (robot numbered from 0; s, m, m, rad, m/s, rad/s).
+ * The trajectories of a whole run of `scenario` from its starts as CSV text pieces, in the
+ * command line's format: CSV_HEADER, then for every step (t = 0 first, the end last) one row
+ * per robot, `t,robot,x,y,theta,v,omega` (robot numbered from 0; s, m, m, rad, m/s, rad/s).
+ * Works in slices of CSV_SLICE_MS so that the page stays responsive; `progress(fraction)`
+ * after each; resolves null once `signal` is aborted.
+ * @param {any} scenario
+ * @param {{progress?: (fraction: number) => void, signal?: AbortSignal}} [options]
+ * @returns {Promise<string[] | null>}
  */
-function trajectoriesCsv(scenario) {
-  const run = new Run(scenario);
+export async function trajectoriesCsv(scenario, { progress = () => {}, signal } = {}) {
+  const { memory } = await wasmReady();
+  const pg = new Playground(scenario);
   try {
-    const tr = run.trajectories();
-    const n = run.robotCount;
-    const samples = run.sampleCount;
-    const rows = ['robot,t,x,y,theta,v,omega'];
-    for (let i = 0; i < n; i++) {
-      for (let k = 0; k < samples; k++) {
-        const o = (i * samples + k) * SAMPLE_STRIDE;
-        rows.push(`${i},${tr[o]},${tr[o + 1]},${tr[o + 2]},${tr[o + 3]},${tr[o + 4]},${tr[o + 5]}`);
+    const n = scenario.robots.length;
+    const steps = Math.round(pg.duration / pg.dt);
+    const pieces = [`${CSV_HEADER}\n`];
+    let poses = new Float64Array(0);
+    let status = new Float64Array(0);
+    const views = () => {
+      const { poses: p, status: st } = pg.layout();
+      poses = new Float64Array(memory.buffer, p.pointer, p.length);
+      status = new Float64Array(memory.buffer, st.pointer, st.length);
+    };
+    views();
+    for (let k = 0; k <= steps; ) {
+      const t0 = performance.now();
+      const rows = [];
+      while (k <= steps && performance.now() - t0 < CSV_SLICE_MS) {
+        if (k > 0) {
+          pg.step(1);
+          if (poses.buffer !== memory.buffer || poses.length === 0) views();
+        }
+        const t = pg.time;
+        for (let i = 0; i < n; i++) {
+          const o = i * POSE_STRIDE;
+          const q = i * STATUS_STRIDE;
+          rows.push(
+            `${t},${i},${poses[o]},${poses[o + 1]},${poses[o + 2]},${status[q + STATUS.v]},${status[q + STATUS.omega]}`,
+          );
+        }
+        k += 1;
       }
+      pieces.push(`${rows.join('\n')}\n`);
+      progress(Math.min(1, k / (steps + 1)));
+      await new Promise((r) => setTimeout(r, 0));
+      if (signal?.aborted) return null;
     }
-    return `${rows.join('\n')}\n`;
+    return pieces;
   } finally {
-    run.free();
+    pg.free();
   }
 }
 
 /** Reads an imported file as text, refusing files over the cap before reading them. */
 export async function readScenarioFile(file) {
-  if (file.size > MAX_SCENARIO_BYTES) {
+  if (file.size > MAX_FILE_BYTES) {
     throw new Error(
-      `import: ${file.name} is ${file.size} bytes; a scenario file may be at most ${MAX_SCENARIO_BYTES} bytes`,
+      `import: ${file.name} is ${formatBytes(file.size)}; a scenario file may be at most ${formatBytes(MAX_FILE_BYTES)}`,
     );
   }
   return file.text();
 }
 
-/** Fetches the scenario text at `url`; throws for an HTTP error or a text over the cap. */
+/**
+ * Fetches the scenario text at `url`; throws for an HTTP error, an HTML page (a wrong address
+ * that a server answers with its own page) or a text over the cap.
+ */
 export async function fetchScenarioText(url) {
   const res = await fetch(url);
-  if (!res.ok) throw new Error(`HTTP ${res.status}`);
+  if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
   const text = await res.text();
-  if (text.length > MAX_SCENARIO_BYTES) throw new Error(`the file is longer than ${MAX_SCENARIO_BYTES} bytes`);
+  if (text.length > MAX_FILE_BYTES) throw new Error(`the file is longer than ${formatBytes(MAX_FILE_BYTES)}`);
+  if ((res.headers.get('content-type') ?? '').includes('html') || /^\s*</.test(text)) {
+    throw new Error('the address gives an HTML page, not a scenario JSON file (is the address right?)');
+  }
   return text;
 }
 
 /** Offers `scenario` as a JSON file that `dvf simulate` reads. */
 export function downloadScenarioJson(scenario) {
-  const text = `${JSON.stringify(scenario, null, 2)}\n`;
-  download(new Blob([text], { type: 'application/json' }), `${fileStem(scenario.name)}.json`);
+  const text = `${exactJson(scenario, 2)}\n`;
+  downloadBlob(new Blob([text], { type: 'application/json' }), `${fileStem(scenario.name)}.json`);
 }
 
-/** Offers the trajectories of a whole run of `scenario` from its starts as CSV. */
-export function downloadTrajectoriesCsv(scenario) {
-  download(new Blob([trajectoriesCsv(scenario)], { type: 'text/csv' }), `${fileStem(scenario.name)}.csv`);
-}
-
-/** Offers the picture on `canvas` as a PNG named after the scenario `name`. */
-export function downloadCanvasPng(canvas, name) {
-  canvas.toBlob((blob) => download(blob, `${fileStem(name)}.png`), 'image/png');
+/** Offers CSV text `pieces` (trajectoriesCsv) as a file named after `scenario`. */
+export function downloadCsv(pieces, scenario) {
+  downloadBlob(new Blob(pieces, { type: 'text/csv' }), `${fileStem(scenario.name)}.csv`);
 }

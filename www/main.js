@@ -1,13 +1,19 @@
 // The main page: one <dvf-playground> that fills the window, with the scene kept in the
-// address's fragment (#s=<scenario JSON>, or #<preset name>) so that a copied link reopens it.
+// address's fragment (#s=<scenario JSON>, or #<preset name>) so that a copied link reopens it,
+// and after it the view (`&field=curves&theta0=45&sensing=1&robot=3&t=5.2&view=x0,y0,x1,y1`,
+// io.js, viewSuffix).
 
 import './dvf-playground.js';
-import { fragmentFor, MAX_SCENARIO_BYTES, parseFragment } from './io.js';
+import { downloadScenarioJson, FRAGMENT_PREFIX, fragmentFor, MAX_LINK_CHARS, parseFragment, viewSuffix } from './io.js';
 import { messageOf } from './playground/message.js';
 
 const playground = /** @type {import('./dvf-playground.js').DvfPlayground} */ (document.getElementById('playground'));
 /** The fragment this page last wrote, so that its own hashchange is not read back. */
 let written = location.hash;
+/** The scene's part of the fragment (empty when the scene is too big for a link). */
+let scenePart = '';
+/** Whether the message says that the scene is too big for a link. */
+let tooBigShown = false;
 
 /** Shows the scene the fragment asks for; a bad fragment shows why and keeps the scene. */
 function openFragment(hash) {
@@ -17,21 +23,53 @@ function openFragment(hash) {
     if (wanted.kind === 'scenario') playground.load(wanted.text);
     else if (wanted.kind === 'preset' && !playground.loadPreset(wanted.name)) return;
     if (wanted.kind !== 'none') playground.showMessage('');
+    tooBigShown = false;
+    scenePart = hash.split('&')[0];
+    if (wanted.view) playground.setViewState(wanted.view);
   } catch (e) {
     playground.showMessage(`This link does not hold a scenario the playground can open. ${messageOf(e)}`);
+  }
+}
+
+/** Writes the scene's part and the view into the address (no history entry). */
+function writeAddress() {
+  written = scenePart ? scenePart + viewSuffix(playground.viewState()) : '';
+  history.replaceState(null, '', written || `${location.pathname}${location.search}`);
+}
+
+/** After an edit: the scene's part anew. */
+function sceneChanged() {
+  // A preset by its name (a crowd of 10,000 is 600 KB of JSON); an edited scene as JSON. A
+  // scene too big for a link leaves the address without one (a stale one would open another
+  // scene) and the message over the canvas says so, offering the file instead. The plain
+  // JSON's length first: the link's within a few characters, and a crowd's exact digits
+  // (fragmentFor) take longer to write than a frame.
+  const preset = playground.presetName();
+  const scenario = preset ? null : playground.scenario();
+  const plain = scenario ? FRAGMENT_PREFIX.length + encodeURIComponent(JSON.stringify(scenario)).length : 0;
+  const fragment = preset ? `#${encodeURIComponent(preset)}` : plain <= MAX_LINK_CHARS ? fragmentFor(scenario) : null;
+  scenePart = fragment && fragment.length <= MAX_LINK_CHARS ? fragment : '';
+  writeAddress();
+  if (!scenePart) {
+    playground.showMessage(
+      `This scene is too big for a link (${(fragment?.length ?? plain).toLocaleString('en')} characters; a link holds at most ${MAX_LINK_CHARS.toLocaleString('en')}), so the address no longer holds it. Save it with Scenario JSON; Import… opens the file again.`,
+      { info: true, actions: [['Scenario JSON', () => downloadScenarioJson(playground.scenario())]] },
+    );
+    tooBigShown = true;
+  } else if (tooBigShown) {
+    playground.showMessage('');
+    tooBigShown = false;
   }
 }
 
 async function main() {
   await playground.loaded;
   openFragment(location.hash);
-  playground.addEventListener('change', () => {
-    // A preset by its name (a crowd of 10,000 is 600 KB of JSON); an edited scene as JSON, or
-    // no fragment at all when that is longer than a link may be (Scenario JSON saves it).
-    const preset = playground.presetName();
-    const fragment = preset ? `#${encodeURIComponent(preset)}` : fragmentFor(playground.scenario());
-    written = fragment.length <= MAX_SCENARIO_BYTES ? fragment : '';
-    history.replaceState(null, '', written || `${location.pathname}${location.search}`);
+  // A fresh page: the default preset, named once the view changes.
+  if (!location.hash && playground.presetName()) scenePart = `#${encodeURIComponent(playground.presetName())}`;
+  playground.addEventListener('change', sceneChanged);
+  playground.addEventListener('viewchange', () => {
+    if (scenePart) writeAddress();
   });
   window.addEventListener('hashchange', () => {
     if (location.hash !== written) openFragment(location.hash);

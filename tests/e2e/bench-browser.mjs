@@ -21,6 +21,11 @@
 //   Budget: the median frame within 16 ms up to 1,000 robots (a 60 Hz frame) and 50 ms at
 //   10,000, the 90th percentile within 1.25 times that (room for the noise of a shared machine;
 //   the figures say how much was used).
+// - longest-task: the longest task of the page's main thread (a PerformanceObserver of
+//   `longtask`, which reports tasks over 50 ms) in each phase of a visit: Example 4 opened,
+//   edited, seeked, exported as CSV and JSON, imported; the crowds of 1,000 and 10,000 robots
+//   opened, edited, exported and imported. Budget: LONG_TASK_BUDGET_MS in every phase up to
+//   1,000 robots; the 10,000-robot crowd's are reported.
 // Screenshots of each crowd go to test-results/.
 //
 // Run: make bench-browser   (or: node tests/e2e/bench-browser.mjs after make build-wasm)
@@ -50,6 +55,9 @@ const CASES = [
   { robots: 1_000, ahead: 0.4, budgetMs: 16 },
   { robots: 10_000, ahead: 0.003, budgetMs: 50 },
 ];
+
+/** No task of the main thread longer than this (ms) in a phase up to 1,000 robots. */
+const LONG_TASK_BUDGET_MS = 100;
 
 const figures = [];
 /** Prints `figure` as a JSON line and keeps it for the record. */
@@ -200,9 +208,73 @@ await run(async ({ base, newPage, browser }) => {
     checkQuiet(crowd, `crowd of ${robots}`);
     await crowd.context().close();
   }
+  await longestTasks(base, newPage);
   writeFileSync(
     RECORD,
     `${JSON.stringify({ date: new Date().toISOString(), browser: browser.version(), figures }, null, 2)}\n`,
   );
   console.log(`recorded ${figures.length} figures in ${RECORD}`);
 });
+
+/**
+ * The longest task of each phase of a visit (see the top); a phase ends once its work is done
+ * and the page has been idle for a moment.
+ */
+async function longestTasks(base, newPage) {
+  const page = await newPage({ viewport: VIEWPORT });
+  await page.goto(`${base}/`);
+  await waitLoaded(page);
+  await page.evaluate(() => {
+    window.longest = {};
+    window.phase = 'open';
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) {
+        window.longest[window.phase] = Math.max(window.longest[window.phase] ?? 0, e.duration);
+      }
+    }).observe({ type: 'longtask', buffered: true });
+  });
+  const part = (id) => page.locator(`${PG} [data-id="${id}"]`);
+  const phase = async (name, body) => {
+    await page.evaluate((n) => {
+      window.phase = n;
+    }, name);
+    await body();
+    await page.waitForTimeout(600);
+  };
+  const edit = async () => {
+    const kv = page.locator(`${PG} input[name="k_v"]`);
+    await kv.fill('1.5');
+    await kv.press('Enter');
+  };
+  const exportImport = async (label) => {
+    let file = '';
+    await phase(`${label} export JSON`, async () => {
+      const [d] = await Promise.all([page.waitForEvent('download'), part('export-json').click()]);
+      file = await d.path();
+    });
+    await phase(`${label} import`, () => part('import-file').setInputFiles(file));
+  };
+  await phase('Example 4 edit', edit);
+  await phase('Example 4 seek', () => part('scrubber').fill('700'));
+  await phase('Example 4 CSV', async () => {
+    await Promise.all([page.waitForEvent('download'), part('export-csv').click()]);
+  });
+  await exportImport('Example 4');
+  for (const n of [1000, 10000]) {
+    await phase(`crowd-${n} open`, async () => {
+      await part('preset').selectOption('crowd');
+      await part('crowd-n').fill(String(n));
+      await part('crowd-n').press('Enter');
+    });
+    await phase(`crowd-${n} edit`, edit);
+    await exportImport(`crowd-${n}`);
+  }
+  const longest = await page.evaluate(() => window.longest);
+  report({ figure: 'longest-task', unit: 'ms', phases: longest, budget_ms: LONG_TASK_BUDGET_MS });
+  for (const [name, ms] of Object.entries(longest)) {
+    if (name.startsWith('crowd-10000')) continue;
+    check(ms <= LONG_TASK_BUDGET_MS, `${name}: no task longer than ${LONG_TASK_BUDGET_MS} ms (${ms.toFixed(0)} ms)`);
+  }
+  checkQuiet(page, 'the visit of the longest tasks');
+  await page.context().close();
+}

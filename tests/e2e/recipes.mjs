@@ -6,7 +6,8 @@
 //   - examples/plain-html served over HTTP (both figures draw, the API answers), and opened
 //     from file:// (the text in the tags says to serve it over HTTP); the single-file build
 //     without any .wasm file beside it; the `wasm` attribute pointing elsewhere; a missing
-//     wasm module (the message in the figure's box);
+//     wasm module (the message in the figure's box); in the single-file build and with the
+//     `wasm` attribute, a figure with `controls` whose results panel runs in its worker;
 //   - examples/mdbook built by mdBook: the chapter's two figures draw, keys typed in a figure
 //     stay there while mdBook's search still opens and finds, the figures' theme follows
 //     mdBook's theme menu, and going to the next chapter and back starts them again;
@@ -54,6 +55,23 @@ async function checkDrew(page, what) {
     const { coloured } = await canvasStats(page, `#${id}`);
     check(coloured > DREW_PIXELS, `${what}: #${id} drew (${coloured} coloured pixels)`);
   }
+}
+
+/** Checks that figure `id`'s results panel (a run in its worker, handed the page's module) reported. */
+async function checkResults(page, id, what) {
+  const sel = `#${id}`;
+  await page
+    .waitForFunction(
+      (sel) => document.querySelector(sel).shadowRoot.querySelector('[data-id="results"]').dataset.ready !== undefined,
+      sel,
+      { timeout: 30_000 },
+    )
+    .catch(() => {});
+  const text = await page.evaluate(
+    (sel) => document.querySelector(sel).shadowRoot.querySelector('[data-id="results"]').textContent,
+    sel,
+  );
+  check(/\d+ of \d+ robots converged/.test(text), `${what}: the results panel's worker ran ("${text.slice(0, 60)}…")`);
 }
 
 /** The time shown by figure `id` on `page`. */
@@ -144,12 +162,14 @@ await run(async ({ newPage }) => {
       join(single, 'index.html'),
       `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>one file</title><link rel="icon" href="data:,">
       <script type="module" src="dvf-playground.inline.js"></script></head>
-      <body><dvf-playground id="one" preset="example3-line-swap" time="3" readonly style="height:400px"></dvf-playground></body></html>`,
+      <body><dvf-playground id="one" preset="example3-line-swap" time="3" readonly style="height:400px"></dvf-playground>
+      <dvf-playground id="two" preset="example3-line-swap" controls style="height:560px"></dvf-playground></body></html>`,
     );
     const singlePage = await newPage();
     await singlePage.goto(`${await serve(single)}/index.html`);
     await checkDrew(singlePage, 'single-file build');
     check(Math.abs((await timeOf(singlePage, 'one')) - 3) < TIME_TOLERANCE_S, 'single-file build: t = 3 s shown');
+    await checkResults(singlePage, 'two', 'single-file build');
     checkQuiet(singlePage, 'single-file build');
 
     // The wasm attribute: the module moved elsewhere; and a module that is nowhere.
@@ -157,16 +177,23 @@ await run(async ({ newPage }) => {
     cpSync(join(installed), join(moved, 'dvf-playground'), { recursive: true });
     mkdirSync(join(moved, 'static'));
     renameSync(join(moved, 'dvf-playground', 'pkg', 'dvf_bg.wasm'), join(moved, 'static', 'dvf.wasm'));
-    const figurePage = (wasm) =>
+    const figurePage = (wasm, more = '') =>
       `<!doctype html><html lang="en"><head><meta charset="utf-8"><title>wasm</title><link rel="icon" href="data:,">
       <script type="module" src="dvf-playground/dvf-playground.js"></script></head>
-      <body><dvf-playground id="w" ${wasm} preset="example3-line-swap" style="height:400px"></dvf-playground></body></html>`;
-    writeFileSync(join(moved, 'index.html'), figurePage('wasm="static/dvf.wasm"'));
+      <body><dvf-playground id="w" ${wasm} preset="example3-line-swap" style="height:400px"></dvf-playground>${more}</body></html>`;
+    writeFileSync(
+      join(moved, 'index.html'),
+      figurePage(
+        'wasm="static/dvf.wasm"',
+        '<dvf-playground id="wc" preset="example3-line-swap" controls style="height:560px"></dvf-playground>',
+      ),
+    );
     writeFileSync(join(moved, 'missing.html'), figurePage(''));
     const movedBase = await serve(moved);
     const movedPage = await newPage();
     await movedPage.goto(`${movedBase}/index.html`);
     await checkDrew(movedPage, 'wasm="static/dvf.wasm"');
+    await checkResults(movedPage, 'wc', 'wasm="static/dvf.wasm"');
     checkQuiet(movedPage, 'wasm attribute');
     const missing = await newPage();
     await missing.goto(`${movedBase}/missing.html`);

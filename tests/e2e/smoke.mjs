@@ -251,7 +251,7 @@ await run(async ({ base, newPage }) => {
     [
       'a negative radius',
       `#s=${encodeURIComponent('{"robots":[{"start":[0,0,0],"goal":[5,5,0]}],"obstacles":[{"center":[9,9],"radius":-1,"influence":2}]}')}`,
-      'obstacles[0].radius',
+      "obstacle 1's radius",
     ],
     ['an oversized fragment', `#s=${'x'.repeat(70 * 1024)}`, 'at most'],
     ['an unknown preset', '#no-such-preset', 'no preset named'],
@@ -357,22 +357,24 @@ await run(async ({ base, newPage }) => {
   await part(page, 'undo').click();
   await part(page, 'preset').selectOption(SECOND_PRESET);
 
-  // --- Parameters: a bad value shows the core's message and keeps the old one. ---
+  // --- Parameters: a bad value shows the core's message in the panel's names and keeps the
+  // scenario's value; the typed text stays for the user to fix. ---
   const kv = page.locator(`${PG} input[name="k_v"]`);
   await kv.fill('-1');
   await kv.press('Enter');
   await kv.blur();
-  const paramError = await page.locator(`${PG} .param-error`).textContent();
+  const paramError = await page.locator(`${PG} [data-id="params"] .param-error`).textContent();
   check(
-    paramError.startsWith('params.k_v: must be positive') &&
+    paramError.startsWith('k_v: must be positive') &&
       (await scenarioOf(page)).params.k_v === 1 &&
-      (await kv.inputValue()) === '1',
-    `k_v = -1 is refused with "${paramError}" and the field goes back to 1`,
+      (await kv.inputValue()) === '-1',
+    `k_v = -1 is refused with "${paramError}", the scenario keeps 1 and the field the typed text`,
   );
   await kv.fill('1.5');
   await kv.press('Enter');
   check(
-    (await scenarioOf(page)).params.k_v === 1.5 && (await page.locator(`${PG} .param-error`).isHidden()),
+    (await scenarioOf(page)).params.k_v === 1.5 &&
+      (await page.locator(`${PG} [data-id="params"] .param-error`).isHidden()),
     'k_v = 1.5 applies',
   );
   const vmax = page.locator(`${PG} input[name="v_max"]`);
@@ -455,22 +457,34 @@ await run(async ({ base, newPage }) => {
   const csv = readFileSync(await csvDownload.path(), 'utf8')
     .trim()
     .split('\n');
-  const expectedRows = await page.evaluate(
+  // The command line's format (src/bin/dvf.rs, write_csv): a row per robot every dt, and the
+  // run's end where `Run` (the run `dvf simulate` makes) ends it, within 1e-9 m (the same
+  // simulation; the bound only allows for a different order of summation).
+  const expected = await page.evaluate(
     (s) =>
       import('./pkg/dvf.js').then((m) => {
         const r = new m.Run(s);
-        const rows = r.robotCount * r.sampleCount;
+        const tr = r.trajectories();
+        const last = (r.sampleCount - 1) * 6;
+        const ends = [];
+        for (let i = 0; i < r.robotCount; i++)
+          ends.push([tr[i * r.sampleCount * 6 + last + 1], tr[i * r.sampleCount * 6 + last + 2]]);
+        const rows = (Math.round(s.duration / s.dt) + 1) * r.robotCount;
         r.free();
-        return rows;
+        return { rows, ends };
       }),
     current,
   );
   const cols = csv
     .slice(1)
     .every((line) => line.split(',').length === 7 && line.split(',').every((v) => Number.isFinite(Number(v))));
+  const lastRows = csv.slice(-current.robots.length).map((line) => line.split(',').map(Number));
+  const endMiss = Math.max(
+    ...lastRows.map(([, i, x, y]) => Math.hypot(x - expected.ends[i][0], y - expected.ends[i][1])),
+  );
   check(
-    csv[0] === 'robot,t,x,y,theta,v,omega' && csv.length - 1 === expectedRows && cols,
-    `the CSV has the header and ${csv.length - 1} rows of 7 numbers (expected ${expectedRows})`,
+    csv[0] === 't,robot,x,y,theta,v,omega' && csv.length - 1 === expected.rows && cols && endMiss <= 1e-9,
+    `the CSV has the command line's header and ${csv.length - 1} rows of 7 numbers (expected ${expected.rows}), ending where the run ends (${endMiss.toExponential(1)} m)`,
   );
   const [pngDownload] = await Promise.all([page.waitForEvent('download'), part(page, 'export-png').click()]);
   const png = readFileSync(await pngDownload.path());
@@ -494,7 +508,7 @@ await run(async ({ base, newPage }) => {
   );
   const importMessage = await part(page, 'message').textContent();
   check(
-    importMessage.includes('robots[0].goal') && JSON.stringify(await scenarioOf(page)) === JSON.stringify(shownBefore),
+    importMessage.includes("robot 1's goal") && JSON.stringify(await scenarioOf(page)) === JSON.stringify(shownBefore),
     `a bad import shows "${importMessage}" and keeps the scene`,
   );
   await part(page, 'import-file').setInputFiles({

@@ -15,7 +15,16 @@ import {
   drawVirtualObstacle,
   strokeDashed,
 } from '../render/glyphs.js';
-import { CURVE_COLOUR, FIELD_COLOUR, PREDICTED_ALPHA, PREDICTED_WIDTH_PX, TRAIL_WIDTH_PX } from '../render/theme.js';
+import {
+  AXIS_COLOUR,
+  BOUNDS_FILL,
+  CANVAS_BACKGROUND,
+  CURVE_COLOUR,
+  FIELD_COLOUR,
+  PREDICTED_ALPHA,
+  PREDICTED_WIDTH_PX,
+  TRAIL_WIDTH_PX,
+} from '../render/theme.js';
 import { el } from './dom.js';
 
 /** Legend glyph size (CSS px). */
@@ -74,10 +83,22 @@ function drawCurveGlyph(ctx, x, y) {
   ctx.fill();
 }
 
+/** The grey outside the scenario's bounds, beside the white inside. */
+function drawOutsideGlyph(ctx, x, y) {
+  ctx.fillStyle = CANVAS_BACKGROUND;
+  ctx.fillRect(x - 10, y - 8, 20, 16);
+  ctx.fillStyle = BOUNDS_FILL;
+  ctx.fillRect(x - 2, y - 8, 12, 16);
+  ctx.strokeStyle = AXIS_COLOUR;
+  ctx.lineWidth = 1;
+  ctx.strokeRect(x - 9.5, y - 7.5, 19, 15);
+}
+
 /** Fills the legend list `list`. */
 export function buildLegend(list) {
   const n = LEGEND_NEUTRAL;
   const entries = [
+    ['outside the bounds', drawOutsideGlyph],
     ['robot now', (c, x, y) => drawRobot(c, x, y, 0.5, n)],
     ['goal pose (ghost)', (c, x, y) => drawGoal(c, x, y, 0.5, n)],
     ['start pose', (c, x, y) => drawStart(c, x, y, 0.5, n)],

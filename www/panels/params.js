@@ -1,12 +1,14 @@
-// The parameters panel: one field per entry of the scenario's `params`, applied on Enter.
-// A value the core refuses shows the core's message under the form and the field returns to
-// the value it had.
+// The parameters panel: one field per parameter of the scenario's `params`, and the run's dt,
+// duration and tolerances, applied on Enter. A value the core refuses keeps the typed text,
+// marked, with the core's message under the form in the panel's own names (R_c, not
+// params.avoid_radius); a value taken, or a new scene, clears every mark and the message.
 
+import { humanize } from '../playground/message.js';
 import { el } from './dom.js';
 
 /**
- * The editable parameters: key in `params`, label, unit, meaning, whether it may be empty
- * (no saturation, no barrier).
+ * The editable fields: key (in `params`, or `dt` and `duration` of the scenario), label, unit,
+ * meaning, whether it may be empty (no saturation, no barrier).
  * @type {[key: string, label: string, unit: string, title: string, optional?: boolean][]}
  */
 export const PARAMETERS = [
@@ -27,7 +29,13 @@ export const PARAMETERS = [
     'safety barrier: a gap to a safe disc or an obstacle shrinks by at most α·dt per step (empty: off, the paper alone)',
     true,
   ],
+  ['tol_position', 'tol_p', 'm', 'a robot has converged within this distance of its goal'],
+  ['tol_heading', 'tol_θ', 'rad', 'a robot has converged within this heading error'],
+  ['dt', 'dt', 's', 'the step of the simulation'],
+  ['duration', 'T', 's', 'the duration of the run'],
 ];
+/** Fields of the scenario itself rather than of its `params`. */
+const SCENARIO_FIELDS = new Set(['dt', 'duration']);
 /** The avoidance modes, as in `params.avoidance`. */
 const AVOIDANCE_MODES = ['exit', 'paper'];
 
@@ -43,6 +51,8 @@ export class ParamsPanel {
     this.form = form;
     /** @type {Map<string, HTMLInputElement | HTMLSelectElement>} */
     this.inputs = new Map();
+    /** @type {Record<string, any> | null} the scenario last filled in */
+    this.scenario = null;
     form.replaceChildren();
     for (const [key, label, unit, title, optional] of PARAMETERS) {
       const row = el('label', undefined, 'param');
@@ -58,8 +68,16 @@ export class ParamsPanel {
       this.inputs.set(key, input);
       input.addEventListener('change', () => {
         const text = input.value.trim();
-        const value = text === '' ? (optional ? null : Number.NaN) : Number(text);
-        this.mark(input, apply(key, value));
+        if (text === '' && !optional) {
+          this.refuse(input, `${label}: a value is needed`);
+          return;
+        }
+        const value = text === '' ? null : Number(text);
+        if (value !== null && !Number.isFinite(value)) {
+          this.refuse(input, `${label}: must be a number`);
+          return;
+        }
+        this.result(input, label, apply(key, value));
       });
     }
     const row = el('label', undefined, 'param wide');
@@ -72,32 +90,80 @@ export class ParamsPanel {
       o.value = mode;
       select.append(o);
     }
-    select.addEventListener('change', () => this.mark(select, apply('avoidance', select.value)));
+    select.addEventListener('change', () => this.result(select, 'avoidance', apply('avoidance', select.value)));
     row.append(el('span', 'avoidance', 'param-name'), select);
     form.append(row);
     this.inputs.set('avoidance', select);
     this.error = el('p', '', 'param-error');
     this.error.setAttribute('role', 'alert');
     this.error.hidden = true;
-    form.append(this.error);
-  }
-
-  /** Shows (or clears) the message of the last parameter change under the form. */
-  mark(input, message) {
-    input.setAttribute('aria-invalid', String(Boolean(message)));
-    this.error.textContent = message ?? '';
-    this.error.hidden = !message;
+    this.warning = el('p', '', 'param-warning');
+    this.warning.dataset.id = 'gain-warning';
+    this.warning.hidden = true;
+    form.append(this.error, this.warning);
   }
 
   /**
-   * Puts the scenario's parameter values into the form; not into `typing` (the field being
-   * typed in, if any), unless it is null.
+   * Warns of gains known to fail (docs/notes-on-the-paper.md, 3.2, and README.md,
+   * Parameters): k_a ≤ 2·k_ω lets a robot stall where the field is perpendicular to
+   * its heading; k_v > k_ω leaves the attitude loop slower than the position loop.
    */
-  fill(params, typing = null) {
+  warn(p) {
+    const notes = [];
+    if (p.k_a <= 2 * p.k_omega) {
+      notes.push(
+        `k_a ≤ 2·k_ω (${p.k_a} ≤ ${2 * p.k_omega}): a robot can stall where the field is perpendicular to its heading.`,
+      );
+    }
+    if (p.k_v > p.k_omega) {
+      notes.push(
+        `k_v > k_ω (${p.k_v} > ${p.k_omega}): the heading lags the position; robots may end with a large heading error.`,
+      );
+    }
+    this.warning.textContent = notes.join(' ');
+    this.warning.hidden = notes.length === 0;
+  }
+
+  /** After `apply`: a refusal keeps the typed text and shows why; a value taken clears all. */
+  result(input, label, message) {
+    if (!message) {
+      this.clearMarks();
+      return;
+    }
+    const text = humanize(message);
+    // The field the user changed comes first, whichever field the core names.
+    this.refuse(input, text.startsWith(`${label}:`) ? text : `${label} refused: ${text}`);
+  }
+
+  /** Marks `input` as refused with `message`; its typed text stays for the user to fix. */
+  refuse(input, message) {
+    input.setAttribute('aria-invalid', 'true');
+    this.error.textContent = message;
+    this.error.hidden = false;
+  }
+
+  /** No field marked, no message, every field showing the scenario's value. */
+  clearMarks() {
+    for (const input of this.inputs.values()) input.removeAttribute('aria-invalid');
+    this.error.textContent = '';
+    this.error.hidden = true;
+    if (this.scenario) this.fill(this.scenario);
+  }
+
+  /**
+   * Puts scenario `s`'s values into the form; not into `typing` (the field being typed in, if
+   * any) unless it is null. A new value anywhere clears the marks of earlier refusals.
+   */
+  fill(s, typing = null) {
+    this.scenario = s;
     for (const [key, input] of this.inputs) {
       if (input === typing) continue;
-      const v = params[key];
+      const v = SCENARIO_FIELDS.has(key) ? s[key] : s.params[key];
       input.value = v == null ? '' : String(v);
+      input.removeAttribute('aria-invalid');
     }
+    this.error.textContent = '';
+    this.error.hidden = true;
+    this.warn(s.params);
   }
 }

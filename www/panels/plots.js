@@ -3,19 +3,23 @@
 // heading errors. The past comes from the trail rings (solid), the future from the prediction
 // (dashed).
 
+import { GHOST_COLOUR } from '../playground/ghost.js';
 import { POSE_STRIDE } from '../playground/wasm-views.js';
 import { fitCanvas } from '../render/canvas.js';
 
 const PLOT_FONT = '10.5px system-ui, sans-serif';
-const PLOT_TEXT = '#4b5563';
-const PLOT_AXIS = '#d1d5db';
 const SAFE_COLOUR = '#dc2626';
 const NOW_COLOUR = '#2563eb';
-/** Inner margins of a plot (CSS px): left holds the y labels, bottom the time labels. */
-const PLOT_MARGIN_PX = { left: 34, right: 8, top: 16, bottom: 16 };
-const PAIR_COLOUR = '#111827';
-const POSITION_COLOUR = '#0f766e';
-const HEADING_COLOUR = '#b45309';
+/**
+ * Inner margins of a plot (CSS px): left holds the value labels, right the second axis's (the
+ * same in both plots, so that their time axes and "now" lines line up), bottom the times.
+ */
+const PLOT_MARGIN_PX = { left: 34, right: 30, top: 16, bottom: 16 };
+export const POSITION_COLOUR = '#0f766e';
+export const HEADING_COLOUR = '#d97706';
+
+/** About this many ticks per axis (ends included). */
+const TICKS = 5;
 /** Dashes of the predicted part of a line and of the safe distance. */
 const DASH_PX = [4, 3];
 /** Space between the two plots (CSS px). */
@@ -117,7 +121,7 @@ function plotSeries(scene, robot, series) {
 }
 
 /**
- * @typedef {{points: Series, colour: string, axis: 'left' | 'right', dashed?: boolean}} Line
+ * @typedef {{points: Series, colour: string, axis: 'left' | 'right', dashed?: boolean, ghost?: boolean}} Line
  * @typedef {{
  *   title: string, duration: number, time: number, lines: Line[],
  *   hline?: {value: number, colour?: string, label: string} | null,
@@ -132,10 +136,10 @@ function plotSeries(scene, robot, series) {
  * @param {{x: number, y: number, w: number, h: number}} box
  * @param {Plot} plot
  */
-function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, rightLabel }) {
+function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, rightLabel }, colours) {
   const { x, y, w, h } = box;
   const px0 = x + PLOT_MARGIN_PX.left;
-  const px1 = x + w - PLOT_MARGIN_PX.right - (rightLabel ? 26 : 0);
+  const px1 = x + w - PLOT_MARGIN_PX.right;
   const py0 = y + PLOT_MARGIN_PX.top;
   const py1 = y + h - PLOT_MARGIN_PX.bottom;
   const max = { left: 0, right: 0 };
@@ -148,31 +152,50 @@ function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, ri
   const sy = (v, axis) => py1 - ((py1 - py0) * v) / max[axis];
 
   ctx.font = PLOT_FONT;
-  ctx.fillStyle = PLOT_TEXT;
+  ctx.fillStyle = colours.text;
   ctx.textBaseline = 'top';
   ctx.textAlign = 'left';
   ctx.fillText(title, x + 4, y + 2);
-  ctx.strokeStyle = PLOT_AXIS;
   ctx.lineWidth = 1;
+  // Ticks: light grid lines across the plot, labelled on the axes.
+  const timeTicks = ticks(duration || 1);
+  const valueTicks = ticks(max.left);
+  ctx.strokeStyle = colours.axis;
+  ctx.globalAlpha = 0.5;
+  ctx.beginPath();
+  for (const t of timeTicks) {
+    const tx = Math.round(sx(t)) + 0.5;
+    ctx.moveTo(tx, py0);
+    ctx.lineTo(tx, py1);
+  }
+  for (const v of valueTicks) {
+    const ty = Math.round(sy(v, 'left')) + 0.5;
+    ctx.moveTo(px0, ty);
+    ctx.lineTo(px1, ty);
+  }
+  ctx.stroke();
+  ctx.globalAlpha = 1;
   ctx.strokeRect(Math.round(px0) + 0.5, Math.round(py0) + 0.5, Math.round(px1 - px0), Math.round(py1 - py0));
   ctx.textBaseline = 'middle';
   ctx.textAlign = 'right';
-  ctx.fillText(fmt(max.left), px0 - 3, py0 + 1);
-  ctx.fillText('0', px0 - 3, py1);
+  for (const v of valueTicks) ctx.fillText(fmt(v), px0 - 3, Math.min(py1, Math.max(py0 + 1, sy(v, 'left'))));
   if (leftLabel) {
     ctx.textAlign = 'left';
     ctx.fillText(leftLabel, x + 2, (py0 + py1) / 2);
   }
   if (rightLabel) {
     ctx.textAlign = 'left';
-    ctx.fillText(fmt(max.right), px1 + 3, py0 + 1);
-    ctx.fillText(rightLabel, px1 + 3, (py0 + py1) / 2);
+    ctx.fillStyle = HEADING_COLOUR;
+    for (const v of ticks(max.right)) {
+      ctx.fillText(fmt(v), px1 + 3, Math.min(py1, Math.max(py0 + 1, sy(v, 'right'))));
+    }
+    ctx.fillStyle = colours.text;
   }
   ctx.textBaseline = 'top';
-  ctx.textAlign = 'right';
-  ctx.fillText(`${fmt(duration)} s`, px1, py1 + 2);
-  ctx.textAlign = 'left';
-  ctx.fillText('0', px0, py1 + 2);
+  for (const [k, t] of timeTicks.entries()) {
+    ctx.textAlign = k === 0 ? 'left' : k === timeTicks.length - 1 ? 'right' : 'center';
+    ctx.fillText(k === timeTicks.length - 1 ? `${fmt(t)} s` : fmt(t), sx(t), py1 + 2);
+  }
 
   if (lines.length === 0) {
     ctx.textAlign = 'center';
@@ -204,8 +227,8 @@ function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, ri
     ctx.moveTo(sx(t[0]), sy(v[0], l.axis));
     for (let k = 1; k < count; k++) ctx.lineTo(sx(t[k]), sy(v[k], l.axis));
     ctx.setLineDash(l.dashed ? DASH_PX : []);
-    ctx.globalAlpha = l.dashed ? 0.6 : 1;
-    ctx.lineWidth = 1.5;
+    ctx.globalAlpha = l.ghost ? 0.45 : l.dashed ? 0.6 : 1;
+    ctx.lineWidth = l.ghost ? 3 : 1.5;
     ctx.strokeStyle = l.colour;
     ctx.stroke();
   }
@@ -218,6 +241,16 @@ function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, ri
   ctx.lineTo(nx, py1);
   ctx.strokeStyle = NOW_COLOUR;
   ctx.stroke();
+  return { x0: px0, x1: px1, nowX: nx, timeTicks, valueTicks };
+}
+
+/** Ticks from 0 to `max` (a niceCeil) at a 1, 2, 2.5 or 5 × 10^k step: about TICKS of them. */
+function ticks(max) {
+  const step = niceCeil(max / (TICKS - 1));
+  const out = [];
+  for (let k = 0; k * step <= max * (1 + 1e-9); k++) out.push(k * step);
+  if (out[out.length - 1] < max * (1 - 1e-9)) out.push(max);
+  return out;
 }
 
 /** 1, 2, 2.5 or 5 × 10^k at or above `v`. */
@@ -237,10 +270,27 @@ export class PlotsPanel {
   constructor(canvas) {
     this.canvas = canvas;
     this.series = makeSeries();
+    /** The colours of text, axes and the pair line (render/theme.js, readPalette). */
+    this.colours = { text: '#4b5563', axis: '#d1d5db', pair: '#111827' };
+    /** @type {import('../dvf-playground.js').PlotGeometry[]} the plots as last drawn */
+    this.geometry = [];
+    /** The time shown across the plots (s), for a click to find the time under it. */
+    this.duration = 0;
   }
 
-  /** Draws both plots for `scene` (render/scene.js) and inspected robot `robot`. */
-  draw(scene, robot) {
+  /** The time (s) at canvas x `px` (CSS px), clamped to the run; null before a draw. */
+  timeAt(px) {
+    const g = this.geometry[0];
+    if (!g) return null;
+    const f = (px - g.x0) / (g.x1 - g.x0);
+    return Math.min(1, Math.max(0, f)) * this.duration;
+  }
+
+  /**
+   * Draws both plots for `scene` (render/scene.js) and inspected robot `robot`, with the
+   * pinned run `ghost` (playground/ghost.js) faded, if any.
+   */
+  draw(scene, robot, ghost = null) {
     const { ctx, width, height } = fitCanvas(this.canvas);
     ctx.clearRect(0, 0, width, height);
     const s = scene.scenario;
@@ -252,10 +302,20 @@ export class PlotsPanel {
       s.independent || s.robots.length < 2
         ? []
         : [
-            { points: series.pastPair, colour: PAIR_COLOUR, axis: 'left' },
-            { points: series.futurePair, colour: PAIR_COLOUR, axis: 'left', dashed: true },
+            { points: series.pastPair, colour: this.colours.pair, axis: 'left' },
+            { points: series.futurePair, colour: this.colours.pair, axis: 'left', dashed: true },
           ];
-    drawPlot(
+    const ghostPair = new Series();
+    const ghostPos = new Series();
+    if (ghost) {
+      for (let k = 0; k < ghost.samples; k++) {
+        if (Number.isFinite(ghost.minPair[k])) ghostPair.push(ghost.times[k], ghost.minPair[k]);
+        if (robot < ghost.robots) ghostPos.push(ghost.times[k], ghost.positionError[robot * ghost.samples + k]);
+      }
+      if (pairLines.length) pairLines.push({ points: ghostPair, colour: GHOST_COLOUR, axis: 'left', ghost: true });
+    }
+    this.duration = scene.duration;
+    const top = drawPlot(
       ctx,
       { x: 0, y: 0, w: width, h: half - gap },
       {
@@ -265,12 +325,13 @@ export class PlotsPanel {
         lines: pairLines,
         hline: pairLines.length ? { value: 2 * s.params.safe_radius, colour: SAFE_COLOUR, label: '2·r_ij' } : null,
       },
+      this.colours,
     );
-    drawPlot(
+    const bottom = drawPlot(
       ctx,
       { x: 0, y: half + gap, w: width, h: half - gap },
       {
-        title: `robot ${robot + 1}: position error (m), heading error (rad)`,
+        title: `robot ${robot + 1}: errors to its goal`,
         duration: scene.duration,
         time: scene.time,
         rightLabel: 'rad',
@@ -279,8 +340,39 @@ export class PlotsPanel {
           { points: series.futurePos, colour: POSITION_COLOUR, axis: 'left', dashed: true },
           { points: series.pastHead, colour: HEADING_COLOUR, axis: 'right' },
           { points: series.futureHead, colour: HEADING_COLOUR, axis: 'right', dashed: true },
+          ...(ghost
+            ? [{ points: ghostPos, colour: GHOST_COLOUR, axis: /** @type {'left'} */ ('left'), ghost: true }]
+            : []),
         ],
       },
+      this.colours,
     );
+    this.geometry = [top, bottom];
+  }
+}
+
+/** Fills `list` with the plots' legend: which line is which, and what dashes mean. */
+export function buildPlotsLegend(list) {
+  /** @type {[label: string, colour: string, dashed: boolean][]} */
+  const entries = [
+    ['min distance between two robots', 'var(--pg-plot-pair)', false],
+    ['2·r_ij: closer is a collision', SAFE_COLOUR, true],
+    ['position error (m, left axis)', POSITION_COLOUR, false],
+    ['heading error (rad, right axis)', HEADING_COLOUR, false],
+    ['dashed: predicted from now on', 'var(--pg-muted)', true],
+    ['"now"; click a plot to go to a time', NOW_COLOUR, false],
+    ['wide, faded: the pinned run', GHOST_COLOUR, false],
+  ];
+  list.replaceChildren();
+  for (const [label, colour, dashed] of entries) {
+    const item = document.createElement('li');
+    const swatch = document.createElement('span');
+    swatch.className = dashed ? 'swatch dashed' : 'swatch';
+    swatch.style.borderTopColor = colour;
+    swatch.setAttribute('aria-hidden', 'true');
+    const text = document.createElement('span');
+    text.textContent = label;
+    item.append(swatch, text);
+    list.append(item);
   }
 }

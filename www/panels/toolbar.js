@@ -3,8 +3,17 @@
 // fit, and the exports and import. Without the `controls` attribute the stylesheet hides all
 // but play, step, reset and the field menu.
 
-import { downloadCanvasPng, downloadScenarioJson, downloadTrajectoriesCsv, readScenarioFile } from '../io.js';
+import {
+  csvSize,
+  downloadCsv,
+  downloadScenarioJson,
+  formatBytes,
+  MAX_CSV_BYTES,
+  readScenarioFile,
+  trajectoriesCsv,
+} from '../io.js';
 import { addObstacleInView, addRobotInView, deleteSelection } from '../playground/actions.js';
+import { exportPng } from '../playground/record.js';
 import { DEFAULT_SPEED, SPEEDS } from '../playground/loop.js';
 import { messageOf } from '../playground/message.js';
 import { el } from './dom.js';
@@ -15,6 +24,17 @@ const DEFAULT_CROWD = 1000;
 const CROWD_PREFIX = 'crowd-';
 /** The menu's entry for a crowd. */
 const CROWD_OPTION = 'crowd';
+
+/**
+ * A preset's name in the menu: its summary up to the first colon ("Example 4", "Example 3,
+ * scenario 2") and the rest of the slug after the example's number ("obstacle formation").
+ * @param {{name: string, summary: string}} p
+ */
+export function presetLabel({ name, summary }) {
+  const head = summary.split(':')[0].trim();
+  const words = name.replace(/^[a-z]+\d+-?/, '').replace(/-/g, ' ');
+  return words ? `${head}: ${words}` : head;
+}
 
 export class Toolbar {
   /** @param {import('../playground/controller.js').Controller} controller */
@@ -35,43 +55,61 @@ export class Toolbar {
     $('preset').addEventListener('change', () => {
       if ($('preset').value === CROWD_OPTION) this.loadCrowd();
       else c.loadPreset($('preset').value, { edit: true });
+      // The keys act on the new scene at once (the menu would take letters as a search).
+      if ($('preset').value !== CROWD_OPTION) c.canvas.focus({ preventScroll: true });
     });
     $('crowd-n').addEventListener('change', () => this.loadCrowd());
     $('play').addEventListener('click', () => c.togglePlay());
     $('step').addEventListener('click', () => c.stepTime());
     $('reset').addEventListener('click', () => c.reset());
+    // The scrubber: any time of the run (a seek, frame by frame); the frame keeps it in step
+    // with the clock unless it is held.
+    const scrubber = $('scrubber');
+    this.scrubbing = false;
+    scrubber.addEventListener('pointerdown', () => {
+      this.scrubbing = true;
+    });
+    const release = () => {
+      this.scrubbing = false;
+    };
+    scrubber.addEventListener('pointerup', release);
+    scrubber.addEventListener('change', release);
+    scrubber.addEventListener('input', () => {
+      if (c.pg) c.seekTo((Number(scrubber.value) / Number(scrubber.max)) * c.pg.duration);
+    });
+    $('plots').addEventListener('pointerdown', (e) => {
+      const t = c.painter.plots.timeAt(e.offsetX);
+      if (t != null) c.seekTo(t);
+    });
     $('undo').addEventListener('click', () => c.undo());
     $('redo').addEventListener('click', () => c.redo());
     $('add-robot').addEventListener('click', () => addRobotInView(c));
     $('add-obstacle').addEventListener('click', () => addObstacleInView(c));
     $('delete').addEventListener('click', () => deleteSelection(c));
     $('fit').addEventListener('click', () => c.fit());
+    $('help').addEventListener('click', () => c.toggleHelp());
+    $('help-close').addEventListener('click', () => c.toggleHelp(false));
     $('field').addEventListener('change', () => {
       c.fieldMode = $('field').value;
+      c.viewChanged();
       c.requestDraw();
     });
     $('theta0').addEventListener('change', () => {
       const v = Number($('theta0').value);
       if (Number.isFinite(v) && $('theta0').value.trim() !== '') c.theta0Deg = v;
       else $('theta0').value = String(c.theta0Deg);
+      c.viewChanged();
       c.requestDraw();
     });
     $('sensing').addEventListener('change', () => {
       c.showSensing = $('sensing').checked;
+      c.viewChanged();
       c.requestDraw();
     });
     $('export-json').addEventListener('click', () => downloadScenarioJson(c.scenario()));
-    $('export-png').addEventListener('click', () => {
-      c.painter.draw(); // the backing store holds the current frame
-      downloadCanvasPng(c.canvas, c.model.name);
-    });
-    $('export-csv').addEventListener('click', () => {
-      try {
-        downloadTrajectoriesCsv(c.scenario());
-      } catch (e) {
-        c.showMessage(messageOf(e));
-      }
-    });
+    $('export-png').addEventListener('click', () => exportPng(c, Number($('png-scale').value)));
+    $('record').addEventListener('click', () => c.recorder.toggle());
+    $('export-csv').addEventListener('click', () => this.exportCsv());
     $('import').addEventListener('click', () => $('import-file').click());
     $('import-file').addEventListener('change', async () => {
       const input = $('import-file');
@@ -86,6 +124,45 @@ export class Toolbar {
     });
   }
 
+  /**
+   * Writes the CSV of the whole run in slices, its progress over the canvas with a Cancel
+   * button; a run whose CSV would be larger than MAX_CSV_BYTES is refused up front with its
+   * size, pointing to the command line.
+   */
+  async exportCsv() {
+    const c = this.c;
+    const s = c.scenario();
+    if (!s) return;
+    const { rows, bytes } = csvSize(s);
+    if (bytes > MAX_CSV_BYTES) {
+      c.showMessage(
+        `CSV: the whole run is ${rows.toLocaleString('en')} rows, about ${formatBytes(bytes)}: more than the page writes (${formatBytes(MAX_CSV_BYTES)}). ` +
+          'Save the Scenario JSON and run "dvf simulate scenario.json --csv out.csv" (the same format).',
+        { actions: [['Scenario JSON', () => downloadScenarioJson(s)]] },
+      );
+      return;
+    }
+    const abort = new AbortController();
+    const button = c.$('export-csv');
+    button.disabled = true;
+    const text = c.$('message-text');
+    c.showMessage('Writing the CSV: 0 %', { info: true, source: 'csv', actions: [['Cancel', () => abort.abort()]] });
+    try {
+      const pieces = await trajectoriesCsv(s, {
+        signal: abort.signal,
+        progress: (f) => {
+          if (c.messageSource === 'csv') text.textContent = `Writing the CSV: ${Math.floor(f * 100)} %`;
+        },
+      });
+      c.clearMessage('csv');
+      if (pieces) downloadCsv(pieces, s);
+    } catch (e) {
+      c.showMessage(`CSV: ${messageOf(e)}`);
+    } finally {
+      button.disabled = false;
+    }
+  }
+
   /** Fills the preset menu: an "(edited or imported)" entry, the presets, and the crowd. */
   fillMenus(presets, crowdMax) {
     const $ = this.c.$;
@@ -95,7 +172,7 @@ export class Toolbar {
     custom.disabled = true;
     select.append(custom);
     for (const p of presets) {
-      const o = el('option', p.name);
+      const o = el('option', presetLabel(p));
       o.value = p.name;
       o.title = p.summary;
       select.append(o);
@@ -141,6 +218,13 @@ export class Toolbar {
     $('sensing').checked = showSensing;
   }
 
+  /** The scrubber at time `t` of `duration` (s), unless it is held. */
+  showTime(t, duration) {
+    if (this.scrubbing) return;
+    const scrubber = this.c.$('scrubber');
+    scrubber.value = String(Math.round((t / (duration || 1)) * Number(scrubber.max)));
+  }
+
   /** The play button and the undo, redo and delete buttons as the state is now. */
   update() {
     const c = this.c;
@@ -150,5 +234,8 @@ export class Toolbar {
     c.$('undo').disabled = !c.history.canUndo;
     c.$('redo').disabled = !c.history.canRedo;
     c.$('delete').disabled = !c.selection;
+    const record = c.$('record');
+    record.textContent = c.recorder.active ? 'Stop' : 'Record';
+    record.setAttribute('aria-pressed', String(c.recorder.active));
   }
 }

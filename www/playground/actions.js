@@ -3,6 +3,7 @@
 // (one undo entry, one `change` event) made of its fine-grained edits.
 
 import { messageOf } from './message.js';
+import { POSE_STRIDE } from './wasm-views.js';
 
 /** A new obstacle's radius as a fraction of the view's smaller side; its ring is twice that. */
 const NEW_OBSTACLE_FRACTION = 0.05;
@@ -54,13 +55,45 @@ export function addRobotInView(c) {
   }
 }
 
-/** Adds an obstacle at the view's centre, sized to the view, and selects it. */
+/**
+ * The first centre along a widening spiral about (x, y) where an obstacle of influence radius
+ * `ring` keeps its ring clear of every other obstacle's ring and its disc clear of every
+ * robot's start, pose now and goal (`poses`, flat x, y, θ); without one, (x, y).
+ */
+function freeObstacleSpot(s, poses, x, y, radius, ring) {
+  const gap = s.params?.safe_radius ?? 1;
+  const clear = (cx, cy) =>
+    s.obstacles.every((o) => Math.hypot(o.center[0] - cx, o.center[1] - cy) > o.influence + ring) &&
+    s.robots.every(
+      (r, i) =>
+        Math.hypot(r.start[0] - cx, r.start[1] - cy) > radius + gap &&
+        Math.hypot(r.goal[0] - cx, r.goal[1] - cy) > radius + gap &&
+        Math.hypot(poses[POSE_STRIDE * i] - cx, poses[POSE_STRIDE * i + 1] - cy) > radius + gap,
+    );
+  for (let k = 0; k < ADD_ROBOT_TRIES; k++) {
+    const a = k * 2.4; // the golden angle, as in freeSpot
+    const d = ring * Math.sqrt(k);
+    const cx = x + d * Math.cos(a);
+    const cy = y + d * Math.sin(a);
+    if (clear(cx, cy)) return [cx, cy];
+  }
+  return [x, y];
+}
+
+/** Adds an obstacle about the view's centre, clear of the others, sized to the view, and selects it. */
 export function addObstacleInView(c) {
   const view = c.view();
   const r = (NEW_OBSTACLE_FRACTION * Math.min(view.width, view.height)) / view.scale;
   let index = 0;
   const ok = c.change('add-obstacle', () => {
-    const center = [view.wx(view.width / 2), view.wy(view.height / 2)];
+    const center = freeObstacleSpot(
+      c.model,
+      c.views.poses,
+      view.wx(view.width / 2),
+      view.wy(view.height / 2),
+      r,
+      2 * r,
+    );
     index = c.addObstacle({ center, radius: r, influence: 2 * r });
   });
   if (ok) c.selection = { kind: 'obstacle', index };
@@ -103,25 +136,23 @@ export function nudgeSelection(c, dx, dy, dTheta) {
 }
 
 /**
- * Sets parameter `key` from the parameters panel: `value` is a number, null (an empty
- * optional field) or the avoidance mode. Returns the message when the core refuses it (the
- * form goes back to the scenario's values then), else null.
+ * Sets parameter `key` (or the scenario's `dt` or `duration`) from the parameters panel:
+ * `value` is a number, null (an empty optional field) or the avoidance mode. Returns the
+ * core's message when it refuses the value (the scenario is kept; the panel keeps the typed
+ * text), else null (the panel shows the scenario's values again).
  * @param {Controller} c
  */
 export function changeParam(c, key, value) {
   if (!c.pg) return null;
-  if (typeof value === 'number' && !Number.isFinite(value)) {
-    c.params.fill(c.model.params);
-    return `params.${key}: must be a number`;
-  }
   c.begin();
   try {
     c.setParam(key, value);
   } catch (e) {
     c.cancel();
-    c.params.fill(c.model.params);
     return messageOf(e);
   }
+  c.showMessage('');
   c.commit('params');
+  c.params.fill(c.model);
   return null;
 }

@@ -19,20 +19,27 @@
 
 import { fetchScenarioText } from '../io.js';
 import { buildLegend } from '../panels/legend.js';
+import { buildPlotsLegend } from '../panels/plots.js';
 import { ParamsPanel } from '../panels/params.js';
+import { ResultsPanel } from '../panels/results.js';
+import { SelectionPanel } from '../panels/selection.js';
 import { Toolbar } from '../panels/toolbar.js';
 import { Playground, presetScenario } from '../pkg/dvf.js';
 import { Camera } from '../render/camera.js';
+import { readPalette, setPalette } from '../render/theme.js';
 import { changeParam } from './actions.js';
 import { History } from './history.js';
 import { Input } from './input.js';
 import { FrameLoop } from './loop.js';
 import { messageOf } from './message.js';
 import { Painter } from './paint.js';
-import { LiveViews, wasmReady, wasmSourceName } from './wasm-views.js';
+import { Recorder } from './record.js';
+import { LiveViews, POSE_STRIDE, wasmReady, wasmSourceName } from './wasm-views.js';
 
 /** `seek` asks the core for at most this many steps at once (its limit per call). */
 const MAX_STEPS_PER_CALL = 1_000_000;
+/** A `viewchange` event waits this long (ms) for the next change (a pan is many). */
+const VIEW_EVENT_MS = 400;
 /** The Step button and the S key advance this much simulated time (s). */
 const STEP_TIME_S = 0.1;
 /** θ(0) of the integral curves until the element says otherwise (degrees): the paper's Fig. 1. */
@@ -85,6 +92,10 @@ export class Controller {
     this.readonly = false;
     /** Starts over at the end of the run (`loop`). */
     this.looping = false;
+    /** @type {ReturnType<typeof setTimeout> | null} the pending `viewchange` event */
+    this.viewTimer = null;
+    /** What showed the message now (showMessage's `source`). */
+    this.messageSource = '';
     /** Bumped by every edit, load, reset and API step: the trail layer redraws from scratch. */
     this.generation = 0;
     this.connected = false;
@@ -92,9 +103,23 @@ export class Controller {
     this.camera = new Camera();
     this.loop = new FrameLoop(this);
     this.painter = new Painter(this);
+    this.recorder = new Recorder(this);
+    /** @type {import('./ghost.js').Ghost | null} the pinned run (ghost.js) */
+    this.ghost = null;
+    /** @type {Worker | null} the worker making the run to pin */
+    this.pinning = null;
     this.toolbar = new Toolbar(this);
     this.params = new ParamsPanel(this.$('params'), (key, value) => changeParam(this, key, value));
+    this.results = new ResultsPanel(this);
+    this.selectionPanel = new SelectionPanel(this);
+    /** The scene's colours from the stylesheet (render/theme.js), read by readTheme. */
+    this.palette = readPalette(root.querySelector('.pg'));
     buildLegend(this.$('legend'));
+    buildPlotsLegend(this.$('plots-legend'));
+    // The colours are known once the stylesheet has loaded, and change with the system's theme.
+    root.querySelector('link[rel="stylesheet"]')?.addEventListener('load', () => this.readTheme());
+    matchMedia('(prefers-color-scheme: dark)').addEventListener('change', () => this.readTheme());
+    this.$('message-close').addEventListener('click', () => this.showMessage(''));
     this.input = new Input(this);
   }
 
@@ -117,7 +142,7 @@ export class Controller {
   /** The element is in a document: draw. */
   connect() {
     this.connected = true;
-    this.requestDraw();
+    this.readTheme();
   }
 
   /** The element left its document: stop playing and drawing; the simulation is kept. */
@@ -133,7 +158,7 @@ export class Controller {
    * cleared. Throws the core's Error naming the offending field; the scene is kept then.
    */
   load(scenario) {
-    this.#replace(new Playground(scenario), null);
+    this.#replace(new Playground(scenario), null, scenario);
     this.history.clear();
     this.toolbar.update();
   }
@@ -179,10 +204,11 @@ export class Controller {
     this.#emit('import');
   }
 
-  #replace(pg, presetName) {
+  #replace(pg, presetName, wanted = null) {
     const old = this.pg;
     this.pg = pg;
     old?.free();
+    if (wanted) this.#exactify(wanted);
     this.views.attach(pg);
     this.loop.newScene();
     this.selection = null;
@@ -195,9 +221,52 @@ export class Controller {
     this.preset =
       presetName ?? this.presetList.find((p) => JSON.stringify(presetScenario(p.name)) === model)?.name ?? null;
     this.toolbar.showPreset(this.preset);
-    this.params.fill(this.model.params, this.root.activeElement);
+    this.params.fill(this.model, this.root.activeElement);
     this.toolbar.update();
+    this.results.stale();
     this.requestDraw();
+  }
+
+  /**
+   * After the core read scenario `wanted` (object or JSON text): the few numbers it read a unit
+   * in the last place off (its fast number parser rounds twice; www/exact-json.js writes digits
+   * it reads exactly wherever there are such digits) are set to the very values through the
+   * fine-grained edits, so that a scene exported and imported is the same scene to the bit.
+   */
+  #exactify(wanted) {
+    let w = wanted;
+    try {
+      if (typeof w === 'string') w = JSON.parse(w);
+    } catch {
+      return;
+    }
+    const s = this.pg.scenario();
+    if (!Array.isArray(w?.robots) || w.robots.length !== s.robots.length) return;
+    const pose = (p, n) => Array.isArray(p) && p.length === n && p.every((v) => typeof v === 'number');
+    const differs = (a, b) => a.some((v, j) => v !== b[j]);
+    try {
+      w.robots.forEach((r, i) => {
+        const have = s.robots[i];
+        if (pose(r.start, 3) && differs(r.start, have.start)) this.pg.moveRobot(i, r.start[0], r.start[1], r.start[2]);
+        if (pose(r.goal, 3) && differs(r.goal, have.goal)) this.pg.moveGoal(i, r.goal[0], r.goal[1], r.goal[2]);
+      });
+      (Array.isArray(w.obstacles) ? w.obstacles : []).forEach((o, k) => {
+        const have = s.obstacles[k];
+        if (!have) return;
+        if (pose(o.center, 2) && differs(o.center, have.center)) this.pg.moveObstacle(k, o.center[0], o.center[1]);
+        const r = typeof o.radius === 'number' ? o.radius : have.radius;
+        const infl = typeof o.influence === 'number' ? o.influence : have.influence;
+        if (r !== have.radius || infl !== have.influence) this.pg.resizeObstacle(k, r, infl);
+      });
+      for (const [key, v] of Object.entries(w.params ?? {})) {
+        if (typeof v === 'number' && key in s.params && s.params[key] !== v) this.pg.setParam(key, v);
+      }
+      for (const key of ['duration', 'dt']) {
+        if (typeof w[key] === 'number' && s[key] !== w[key]) this.pg.setParam(key, w[key]);
+      }
+    } catch {
+      // A value the core refuses once exact (it took it a hair away): the core's values stay.
+    }
   }
 
   /** The current scenario as a plain object (a copy), or null before the first scene. */
@@ -219,7 +288,7 @@ export class Controller {
 
   play() {
     if (!this.pg) return;
-    if (this.pg.finished) this.reset();
+    if (this.atEnd()) this.reset();
     this.loop.play();
     this.toolbar.update();
     this.requestDraw();
@@ -228,6 +297,7 @@ export class Controller {
   pause() {
     this.loop.pause();
     this.toolbar.update();
+    this.viewChanged();
     this.requestDraw();
   }
 
@@ -239,17 +309,57 @@ export class Controller {
   /** Back to t = 0 at the scenario's starts (trails cleared). */
   reset() {
     if (!this.pg) return;
+    this.loop.seekStep = null;
+    this.loop.convergedAt = null;
+    this.rewind();
+    this.viewChanged();
+  }
+
+  /** Back to t = 0 for a seek (which goes on from there). */
+  rewind() {
     this.pg.reset();
     this.#changed();
+  }
+
+  /** Goes to time `t` (s) of the run, in slices (FrameLoop.seekTo); the scrubber, the plots. */
+  seekTo(t) {
+    if (!this.pg || !Number.isFinite(t)) return;
+    this.loop.seekTo(t);
+    this.toolbar.update();
+  }
+
+  /** Whether the run is at its end: t = duration, or every robot at its goal (the clock stops). */
+  atEnd() {
+    return Boolean(this.pg) && (this.pg.finished || this.allConverged());
+  }
+
+  /**
+   * Whether every robot is within the tolerances of its goal now (tol_position, tol_heading:
+   * the prediction's test, src/playground/prediction.rs), when the clock stops.
+   */
+  allConverged() {
+    const s = this.model;
+    const p = this.views.poses;
+    const { tol_position: tolP, tol_heading: tolH } = s.params;
+    for (let i = 0; i < s.robots.length; i++) {
+      const g = s.robots[i].goal;
+      const o = i * POSE_STRIDE;
+      if (Math.hypot(p[o] - g[0], p[o + 1] - g[1]) > tolP) return false;
+      const d = Math.abs(p[o + 2] - g[2]) % (2 * Math.PI);
+      if (Math.min(d, 2 * Math.PI - d) > tolH) return false;
+    }
+    return s.robots.length > 0;
   }
 
   /** Advances `n` steps of dt and pauses; returns the steps taken. Throws for a bad `n`. */
   step(n = 1) {
     if (!this.pg) return 0;
     this.pause();
+    this.loop.seekStep = null;
     const taken = this.pg.step(n);
     this.#changed();
     this.#clockMoved();
+    this.viewChanged();
     return taken;
   }
 
@@ -263,6 +373,9 @@ export class Controller {
       throw new Error(`seek: the time must be a number of seconds, not ${t}`);
     if (!this.pg) return 0;
     this.pause();
+    // Synchronous: a seek in slices under way (the scrubber's, FrameLoop.seekTo) ends here.
+    this.loop.seekStep = null;
+    this.loop.convergedAt = null;
     this.pg.reset();
     const target = Math.min(Math.max(t, 0), this.pg.duration);
     // A whole number of steps; the tolerance keeps 6 / 0.01 from rounding down to 599 steps.
@@ -274,6 +387,7 @@ export class Controller {
     }
     this.#changed();
     this.#clockMoved();
+    this.viewChanged();
     return this.views.time;
   }
 
@@ -294,7 +408,15 @@ export class Controller {
   #clockMoved() {
     const time = this.views.time;
     this.host.dispatchEvent(new CustomEvent('tick', { detail: { time } }));
-    if (this.pg.finished) this.host.dispatchEvent(new CustomEvent('finished', { detail: { time } }));
+    if (this.pg.finished) this.finished();
+  }
+
+  /**
+   * The `finished` event: at t = duration, and when the playing clock stops because every
+   * robot is at its goal before then (FrameLoop.advance).
+   */
+  finished() {
+    this.host.dispatchEvent(new CustomEvent('finished', { detail: { time: this.views.time } }));
   }
 
   // ---- edits (see the top of the file) ------------------------------------------------------
@@ -453,7 +575,7 @@ export class Controller {
     if (!this.pg) return;
     const now = () => this.text();
     if (this.history.travel(direction, now, (text) => this.#apply(text))) {
-      this.params.fill(this.model.params, this.root.activeElement);
+      this.params.fill(this.model, this.root.activeElement);
       this.#emit(direction);
     }
     this.toolbar.update();
@@ -473,6 +595,7 @@ export class Controller {
 
   /** Tells the page: a `change` event of `kind`; the scene is no longer a preset but after one. */
   #emit(kind) {
+    if (kind !== 'preset') this.results.stale();
     if (kind !== 'preset' && this.preset) {
       this.preset = null;
       this.toolbar.showPreset(null);
@@ -508,12 +631,14 @@ export class Controller {
   /** Zooms by `factor` about canvas point (px, py). */
   zoom(factor, px, py) {
     this.camera.zoomAbout(this.view(), factor, px, py);
+    this.viewChanged();
     this.requestDraw();
   }
 
   /** Fits the scenario's bounds in the view. */
   fit() {
     this.camera.fit();
+    this.viewChanged();
     this.requestDraw();
   }
 
@@ -523,14 +648,120 @@ export class Controller {
     this.theta0Deg = theta0Deg;
     this.showSensing = sensing;
     this.toolbar.showDisplay(this);
+    this.viewChanged();
     this.requestDraw();
   }
 
-  /** Shows `text` in the message bar (as text, never HTML); empty hides it. */
-  showMessage(text) {
+  /**
+   * Shows `text` over the canvas (as text, never HTML) until the user acts (an edit, a load,
+   * the × button) or a newer message replaces it; empty hides it. `info` marks a notice rather
+   * than an error; `actions` are buttons `[label, run]` beside the text; `source` names what
+   * showed it, for clearMessage.
+   * @param {string} text
+   * @param {{info?: boolean, actions?: [string, () => void][], source?: string}} [options]
+   */
+  showMessage(text, { info = false, actions = [], source = '' } = {}) {
     const box = this.$('message');
-    box.textContent = text ?? '';
+    this.$('message-text').textContent = text ?? '';
+    const buttons = actions.map(([label, run]) => {
+      const b = document.createElement('button');
+      b.type = 'button';
+      b.textContent = label;
+      b.addEventListener('click', () => {
+        this.showMessage('');
+        run();
+      });
+      return b;
+    });
+    this.$('message-actions').replaceChildren(...buttons);
+    box.classList.toggle('info', info);
     box.hidden = !text;
+    this.messageSource = text ? source : '';
+  }
+
+  /** Hides the message if `source` showed it. */
+  clearMessage(source) {
+    if (this.messageSource === source) this.showMessage('');
+  }
+
+  /**
+   * What the view shows, for a link (www/main.js): the field overlay, θ(0) (degrees), the
+   * sensing circles, the inspected robot, the time (s) and, once the user panned or zoomed,
+   * the world box in view ([xmin, ymin, xmax, ymax], m).
+   * @returns {import('../dvf-playground.js').ViewState}
+   */
+  viewState() {
+    const v = this.view();
+    return {
+      field: this.fieldMode,
+      theta0: this.theta0Deg,
+      sensing: this.showSensing,
+      robot: this.focusRobot,
+      time: this.views.time,
+      box: this.camera.user ? [v.wx(0), v.wy(v.height), v.wx(v.width), v.wy(0)] : null,
+    };
+  }
+
+  /**
+   * Shows the view `state` (viewState's fields, each optional): what is not valid for this
+   * scene (a robot that does not exist, a box that is not one, a time past the end) is left
+   * as it is. A time is gone to as a seek.
+   * @param {Partial<import('../dvf-playground.js').ViewState>} state
+   */
+  setViewState(state) {
+    if (!this.pg || !state) return;
+    const { field, theta0, sensing, robot, time, box } = state;
+    this.setDisplay({
+      field: FIELD_MODES.includes(field) ? field : this.fieldMode,
+      theta0Deg: Number.isFinite(theta0) ? theta0 : this.theta0Deg,
+      sensing: typeof sensing === 'boolean' ? sensing : this.showSensing,
+    });
+    if (Number.isInteger(robot) && robot >= 0 && robot < this.model.robots.length) this.focusRobot = robot;
+    if (Array.isArray(box) && box.length === 4 && box.every(Number.isFinite) && box[2] > box[0] && box[3] > box[1]) {
+      const w = Math.max(1, this.canvas.clientWidth);
+      const h = Math.max(1, this.canvas.clientHeight);
+      const scale = Math.min(w / (box[2] - box[0]), h / (box[3] - box[1]));
+      this.camera.state = { cx: (box[0] + box[2]) / 2, cy: (box[1] + box[3]) / 2, scale };
+      this.camera.user = true;
+    }
+    if (Number.isFinite(time) && time > 0 && time <= this.pg.duration) this.seekTo(time);
+    this.requestDraw();
+  }
+
+  /** The view changed (display, camera, inspected robot, time at rest): one `viewchange` soon. */
+  viewChanged() {
+    if (this.viewTimer) clearTimeout(this.viewTimer);
+    this.viewTimer = setTimeout(() => {
+      this.viewTimer = null;
+      this.host.dispatchEvent(new CustomEvent('viewchange'));
+    }, VIEW_EVENT_MS);
+  }
+
+  /** Whether the help overlay is shown. */
+  helpShown() {
+    return !this.$('help-panel').hidden;
+  }
+
+  /** Shows the help overlay (the controls and keys), hides it, or (no `show`) toggles it. */
+  toggleHelp(show = !this.helpShown()) {
+    this.$('help-panel').hidden = !show;
+    if (show) this.$('help-close').focus({ preventScroll: true });
+    else this.canvas.focus({ preventScroll: true });
+  }
+
+  /** Reads the theme's colours again (the stylesheet, the `theme` attribute, the system's). */
+  readTheme() {
+    const theme = this.host.getAttribute('theme');
+    const dark = theme === 'dark' || (theme !== 'light' && matchMedia('(prefers-color-scheme: dark)').matches);
+    const pg = this.root.querySelector('.pg');
+    pg.classList.toggle('dark', dark);
+    this.palette = readPalette(pg);
+    setPalette(this.palette);
+    const p = this.palette;
+    this.painter.plots.colours = { text: p.plotText, axis: p.plotAxis, pair: p.plotPair };
+    this.painter.newTheme();
+    buildLegend(this.$('legend'));
+    this.requestDraw();
   }
 
   requestDraw() {

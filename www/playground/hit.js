@@ -7,6 +7,8 @@ import { POSE_STRIDE } from './wasm-views.js';
 
 /** Hit radius around robots, goals and handles (CSS px). */
 export const HIT_PX = 12;
+/** Robots or goals whose distances to the pointer differ by less than this are on top of one another (CSS px). */
+const STACKED_PX = 2;
 /** Handles are easier to hit than they are wide. */
 const HANDLE_HIT_PX = HANDLE_RADIUS_PX + 4;
 
@@ -44,10 +46,10 @@ export function hitTest(c, px, py) {
       return { kind: dr < di ? 'obstacle-radius' : 'obstacle-influence', index: sel.index };
     }
   }
-  /** @type {{kind: 'robot' | 'goal', index: number, d: number} | null} */
-  let best = null;
+  /** @type {{kind: 'robot' | 'goal', index: number, d: number}[]} */
+  const hits = [];
   const consider = (kind, index, d) => {
-    if (d <= HIT_PX && (!best || d < best.d)) best = { kind, index, d };
+    if (d <= HIT_PX) hits.push({ kind, index, d });
   };
   const p = c.views.poses;
   for (let i = 0; i < s.robots.length; i++) {
@@ -55,7 +57,15 @@ export function hitTest(c, px, py) {
     const g = s.robots[i].goal;
     consider('goal', i, Math.hypot(px - view.sx(g[0]), py - view.sy(g[1])) + 0.5);
   }
-  if (best) return { kind: best.kind, index: best.index };
+  if (hits.length) {
+    // The nearest; of several on top of one another (within STACKED_PX), the one after the
+    // selection, so that clicking again picks each in turn.
+    const nearest = hits.reduce((a, b) => (b.d < a.d ? b : a));
+    const stacked = hits.filter((h) => h.kind === nearest.kind && h.d <= nearest.d + STACKED_PX);
+    const at = sel ? stacked.findIndex((h) => h.kind === sel.kind && h.index === sel.index) : -1;
+    const pick = at >= 0 ? stacked[(at + 1) % stacked.length] : nearest;
+    return { kind: pick.kind, index: pick.index };
+  }
   for (let k = s.obstacles.length - 1; k >= 0; k--) {
     const o = s.obstacles[k];
     const d = Math.hypot(px - view.sx(o.center[0]), py - view.sy(o.center[1]));

@@ -1,7 +1,9 @@
 // Pointer, wheel and keyboard input on a playground's canvas. Mouse, touch and pen through
 // pointer events: drag a robot, goal, obstacle or handle (one gesture of the controller, its
 // moves coalesced to one per animation frame), drag the background to pan, pinch with two
-// fingers to zoom; the wheel zooms about the pointer; keys act on the focused canvas.
+// fingers to zoom; the wheel zooms about the pointer; keys act anywhere inside the element but
+// in a text field (and leave a focused button, menu or box the keys it uses itself), and a key
+// handled here stops here: it never reaches the page.
 
 import { addObstacleInView, addRobotInView, deleteSelection, nudgeSelection } from './actions.js';
 import { hitTest } from './hit.js';
@@ -11,8 +13,8 @@ import { messageOf } from './message.js';
 const KEY_MOVE_FRACTION = 0.02;
 /** Keyboard: Q/E turn the selection by this angle (rad). */
 const KEY_TURN_RAD = Math.PI / 36;
-/** The keys of a figure that is not an editor: play, step, reset, fit and zoom. */
-const VIEW_KEYS = [' ', 's', 'S', 'r', 'R', 'f', 'F', '+', '=', '-', '_'];
+/** The keys of a figure that is not an editor: play, step, reset, fit, zoom and the help. */
+const VIEW_KEYS = [' ', 's', 'S', 'r', 'R', 'f', 'F', '+', '=', '-', '_', '?'];
 /** Zoom factor per wheel notch or +/- key. */
 const ZOOM_STEP = 1.2;
 
@@ -33,7 +35,8 @@ export class Input {
     canvas.addEventListener('pointerup', (e) => this.pointerUp(e));
     canvas.addEventListener('pointercancel', (e) => this.pointerUp(e));
     canvas.addEventListener('wheel', (e) => this.wheel(e), { passive: false });
-    canvas.addEventListener('keydown', (e) => this.keyDown(e));
+    // Keys anywhere inside the element (its shadow root), not only on the canvas.
+    controller.root.addEventListener('keydown', (e) => this.keyDown(/** @type {KeyboardEvent} */ (e)));
   }
 
   /** Where the pointer is, in canvas CSS px. */
@@ -105,6 +108,7 @@ export class Input {
     this.pointers.delete(e.pointerId);
     if (this.pinch) {
       if (this.pointers.size < 2) this.pinch = null;
+      c.viewChanged();
       if (c.canvas.hasPointerCapture(e.pointerId)) c.canvas.releasePointerCapture(e.pointerId);
       return;
     }
@@ -117,6 +121,8 @@ export class Input {
       if (d.moved) c.commit(d.kind);
       else c.cancel();
     }
+    c.clearMessage('drag');
+    c.viewChanged();
     c.requestDraw();
   }
 
@@ -177,9 +183,11 @@ export class Input {
         const o = c.model.obstacles[i];
         c.resizeObstacle(i, o.radius, Math.max(Math.hypot(wx - o.center[0], wy - o.center[1]), o.radius * 1.01));
       }
-      c.showMessage('');
+      c.clearMessage('drag');
     } catch (e) {
-      c.showMessage(messageOf(e));
+      // Over the canvas, so the view does not move; gone once the drag ends (the scene keeps
+      // its last valid position).
+      c.showMessage(messageOf(e), { source: 'drag' });
     }
   }
 
@@ -194,13 +202,25 @@ export class Input {
     c.zoom(e.deltaY < 0 ? ZOOM_STEP : 1 / ZOOM_STEP, px, py);
   }
 
+  /** Whether the focused part `target` needs key `e` itself (typing, a button's Space). */
+  static ownsKey(target, e) {
+    const tag = target?.tagName;
+    const mod = e.ctrlKey || e.metaKey;
+    if (tag === 'TEXTAREA' || target?.isContentEditable) return true;
+    if (tag === 'INPUT') return target.type !== 'checkbox' || e.key === ' ';
+    if (tag === 'SELECT') return !mod && e.key !== 'Delete' && e.key !== 'Escape';
+    if (tag === 'BUTTON') return e.key === ' ' || e.key === 'Enter';
+    return false;
+  }
+
   keyDown(e) {
     const c = this.c;
-    if (!c.pg || c.readonly) return;
+    // A readonly figure takes no key; a focused field, menu or button keeps the keys it uses.
+    if (!c.pg || c.readonly || e.defaultPrevented || Input.ownsKey(e.composedPath()[0], e)) return;
     const mod = e.ctrlKey || e.metaKey;
     const key = e.key;
-    // A figure that is not an editor takes the clock's and the view's keys only.
-    if (!c.editable && !VIEW_KEYS.includes(key)) return;
+    // A figure that is not an editor takes the clock's, the view's and the help's keys only.
+    if (!c.editable && !VIEW_KEYS.includes(key) && !(key === 'Escape' && c.helpShown())) return;
     const centre = () => [c.canvas.clientWidth / 2, c.canvas.clientHeight / 2];
     let handled = true;
     if (mod && (key === 'z' || key === 'Z')) {
@@ -219,6 +239,8 @@ export class Input {
     else if (key === '-' || key === '_') c.zoom(1 / ZOOM_STEP, ...centre());
     else if (key === '[' || key === ']') this.cycleSelection(key === ']' ? 1 : -1);
     else if (key === 'g' || key === 'G') this.toggleGoalSelection();
+    else if (key === '?') c.toggleHelp();
+    else if (key === 'Escape' && c.helpShown()) c.toggleHelp(false);
     else if (key === 'Escape') c.selection = null;
     else if (key.startsWith('Arrow') && c.selection) {
       const view = c.view();
@@ -233,6 +255,7 @@ export class Input {
       // A key the figure used is its own: the host page's shortcuts never see it.
       e.preventDefault();
       e.stopPropagation();
+      c.viewChanged();
       c.toolbar.update();
       c.requestDraw();
     }

@@ -6,15 +6,32 @@ import { showInspected } from '../panels/inspected.js';
 import { PlotsPanel } from '../panels/plots.js';
 import { fitCanvas } from '../render/canvas.js';
 import { drawScene } from '../render/scene.js';
+import { drawGhost } from './ghost.js';
 import { SpriteLayer } from '../render/sprites.js';
-import { FIELD_SPACING_PX } from '../render/theme.js';
+import { FIELD_SPACING_PX, setPalette } from '../render/theme.js';
 import { TRAIL_SETTLE_MS, TrailLayer } from '../render/trails.js';
 import { messageOf } from './message.js';
 
 /** At most this many field arrows per side. */
 const MAX_FIELD_SIDE = 60;
+/** The stamp of a picture or a recording (stamp). */
+const STAMP_FONT = '600 13px system-ui, sans-serif';
 /** Integral curves start from an n × n grid over the scenario's bounds. */
 const CURVE_GRID = 9;
+
+/** The title and the time in the top-left corner of a picture or a recording. */
+function stamp(ctx, title, clock) {
+  ctx.save();
+  ctx.font = STAMP_FONT;
+  ctx.textBaseline = 'top';
+  const text = `${title} · ${clock}`;
+  const w = ctx.measureText(text).width;
+  ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
+  ctx.fillRect(6, 6, w + 12, 22);
+  ctx.fillStyle = '#111827';
+  ctx.fillText(text, 12, 10);
+  ctx.restore();
+}
 
 export class Painter {
   /** @param {import('./controller.js').Controller} controller */
@@ -35,9 +52,24 @@ export class Painter {
     this.curvesKey = '';
   }
 
-  draw() {
+  /** New colours: the crowd's sprites and the trails are drawn anew. */
+  newTheme() {
+    this.spriteLayer = new SpriteLayer();
+    this.c.generation += 1;
+  }
+
+  /**
+   * Draws the frame on the canvas, or with `target` on another canvas at density `dpr` (a
+   * PNG, record.js) with the title and the time stamped in, as in a recording.
+   * @param {{canvas: HTMLCanvasElement, dpr: number} | null} [target]
+   */
+  draw(target = null) {
     const c = this.c;
-    const { ctx, width, height } = fitCanvas(c.canvas);
+    // The module's colours are shared by every playground of the page: this one's, now.
+    setPalette(c.palette);
+    const { ctx, width, height } = target
+      ? fitCanvas(target.canvas, target.dpr, [c.canvas.clientWidth, c.canvas.clientHeight])
+      : fitCanvas(c.canvas);
     const view = c.view();
     const fieldLength = c.fieldMode === 'arrows' ? this.sampleField(view, width, height) : 0;
     const curves = c.fieldMode === 'curves' ? this.integralCurves() : null;
@@ -64,20 +96,31 @@ export class Painter {
         c.requestDraw();
       }, TRAIL_SETTLE_MS);
     }
-    drawScene(ctx, view, scene);
+    drawScene(ctx, view, scene, c.ghost ? () => drawGhost(ctx, view, c.ghost) : null);
     const loop = c.loop;
     const slowed =
       loop.playing && loop.rate < loop.speed * 0.995
         ? ` (${loop.rate.toPrecision(2)}× real time: the crowd steps slower than the clock)`
         : '';
-    c.$('clock').textContent =
-      `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s${loop.playing ? slowed : ' (paused)'}`;
+    const state = loop.playing
+      ? slowed
+      : loop.seekStep != null
+        ? ' (going there…)'
+        : loop.convergedAt != null
+          ? ' (stopped: every robot at its goal)'
+          : ' (paused)';
+    const clock = `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s`;
+    if (target || c.recorder.active) stamp(ctx, c.model.name, clock);
+    if (target) return;
+    c.$('clock').textContent = `${clock}${state}`;
+    c.toolbar.showTime(scene.time, scene.duration);
     c.$('hint').textContent = this.hintText();
     // Free text from the scenario: textContent only, never HTML.
     c.$('title').textContent = c.model.name;
     if (c.host.hasAttribute('controls')) {
-      this.plots.draw(scene, c.focusRobot);
+      this.plots.draw(scene, c.focusRobot, c.ghost);
       showInspected(c.$('robot-info'), c.focusRobot, c.model.robots.length, scene.status);
+      c.selectionPanel.update();
     }
   }
 

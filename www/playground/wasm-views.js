@@ -35,11 +35,15 @@ export let SAMPLE_STRIDE = 0;
  * @typedef {{name: string, summary: string}} PresetInfo
  */
 
-/** The module beside the bindings, relative to this file. */
-const DEFAULT_WASM_PATH = '../pkg/dvf_bg.wasm';
+/**
+ * The module beside the bindings. The same literal as wasm-pack's own default in pkg/dvf.js,
+ * so that a bundler copies (or inlines) one file for both; the single-file build drops that
+ * one (package/build.mjs), so that the module is inlined once.
+ */
+const defaultWasmUrl = () => new URL('../pkg/dvf_bg.wasm', import.meta.url);
 /**
  * Where the module comes from: undefined for `pkg/dvf_bg.wasm` beside the bindings, or a URL
- * (string or URL), or the module's bytes (the single-file build sets them).
+ * (string or URL, resolved against the page), or the module's bytes.
  * @type {string | URL | BufferSource | undefined}
  */
 let wasmSource;
@@ -57,12 +61,28 @@ export function setWasmSource(source) {
   return true;
 }
 
+/** Where the module is loaded from: the page's URL or bytes, else the default (an absolute URL). */
+function wasmSourceNow() {
+  if (wasmSource === undefined) return defaultWasmUrl();
+  if (typeof wasmSource === 'string' || wasmSource instanceof URL) return new URL(String(wasmSource), document.baseURI);
+  return wasmSource;
+}
+
 /** The module's URL as the page asks for it, for messages. */
 export function wasmSourceName() {
-  // Not `new URL('…literal…', import.meta.url)`: a bundler would copy (or inline) the module
-  // a second time for a message.
-  if (wasmSource === undefined) return new URL(DEFAULT_WASM_PATH, import.meta.url).href;
-  return typeof wasmSource === 'string' || wasmSource instanceof URL ? String(wasmSource) : 'the inlined module';
+  const source = wasmSourceNow();
+  return source instanceof URL && source.protocol !== 'data:' ? source.href : 'the inlined module';
+}
+
+/**
+ * A module worker that runs scenarios to their end (results-worker.js: the results panel, a
+ * pinned run), handed the module the page loads (its URL or bytes) with its first message.
+ */
+export function runWorker() {
+  const worker = new Worker(new URL('./results-worker.js', import.meta.url), { type: 'module' });
+  const source = wasmSourceNow();
+  worker.postMessage({ wasm: source instanceof URL ? source.href : source });
+  return worker;
 }
 
 /**
@@ -71,7 +91,7 @@ export function wasmSourceName() {
  * limits, presets and default preset.
  */
 export function wasmReady() {
-  ready ??= init(wasmSource === undefined ? undefined : { module_or_path: wasmSource }).then((wasm) => {
+  ready ??= init({ module_or_path: wasmSourceNow() }).then((wasm) => {
     /** @type {Limits} */
     const limits = playgroundLimits();
     POSE_STRIDE = limits.poseStride;

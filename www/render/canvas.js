@@ -1,13 +1,20 @@
 // A canvas drawn in CSS pixels at the screen's pixel density.
 
 /**
- * Sizes the canvas' backing store to its CSS box times devicePixelRatio and returns the
- * context with CSS pixels as drawing units, plus the box size.
+ * Sizes the canvas' backing store to its CSS box times `dpr` (the screen's devicePixelRatio
+ * unless given; `size` [width, height] stands for the box of a canvas not on the page) and
+ * returns the context with CSS pixels as drawing units, plus the box size.
+ * @param {HTMLCanvasElement} canvas
+ * @param {number} [dpr]
+ * @param {[number, number]} [size]
  */
-export function fitCanvas(canvas) {
-  const dpr = window.devicePixelRatio || 1;
-  const width = Math.max(1, canvas.clientWidth);
-  const height = Math.max(1, canvas.clientHeight);
+export function fitCanvas(
+  canvas,
+  dpr = window.devicePixelRatio || 1,
+  size = [canvas.clientWidth, canvas.clientHeight],
+) {
+  const width = Math.max(1, size[0]);
+  const height = Math.max(1, size[1]);
   const bw = Math.max(1, Math.round(width * dpr));
   const bh = Math.max(1, Math.round(height * dpr));
   if (canvas.width !== bw) canvas.width = bw;

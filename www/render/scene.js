@@ -58,8 +58,10 @@ import {
  * @param {CanvasRenderingContext2D} ctx
  * @param {import('./camera.js').View} view
  * @param {Scene} scene
+ * @param {(() => void) | null} [underlay] draws under the scene's marks, over its grid (a
+ *   pinned run's paths, playground/ghost.js)
  */
-export function drawScene(ctx, view, scene) {
+export function drawScene(ctx, view, scene, underlay = null) {
   const s = scene.scenario;
   ctx.fillStyle = CANVAS_BACKGROUND;
   ctx.fillRect(0, 0, view.width, view.height);
@@ -67,6 +69,7 @@ export function drawScene(ctx, view, scene) {
   ctx.fillStyle = BOUNDS_FILL;
   ctx.fillRect(view.sx(xmin), view.sy(ymax), (xmax - xmin) * view.scale, (ymax - ymin) * view.scale);
   drawGrid(ctx, view);
+  underlay?.();
   if (scene.curves) drawCurves(ctx, view, scene.curves, scene.curvePoints);
   drawObstacles(ctx, view, s.obstacles, scene.selection);
   if (scene.field) drawField(ctx, view, scene.field, s.obstacles, hairline(scene.dpr));

@@ -1,7 +1,10 @@
 // The look of the scene and its legend: colours, line widths, dash patterns, glyph sizes and
 // fonts, in one place. Sizes are CSS pixels.
 
-/** One colour per robot, cycled (Tableau 10: distinct, and legible on white). */
+/**
+ * One colour per robot, cycled: Tableau 10 (distinct, legible on white and on dark grey), then
+ * ten more of other hues and lightness, so that colours repeat only after twenty robots.
+ */
 export const ROBOT_COLOURS = [
   '#4e79a7',
   '#f28e2b',
@@ -13,29 +16,103 @@ export const ROBOT_COLOURS = [
   '#ff9da7',
   '#9c755f',
   '#17becf',
+  '#1f3d7a',
+  '#a0522d',
+  '#7b1fa2',
+  '#2e7d32',
+  '#c2185b',
+  '#00838f',
+  '#9e9d24',
+  '#5d4037',
+  '#ef6c00',
+  '#546e7a',
 ];
-export const CANVAS_BACKGROUND = '#eef0f3';
-export const BOUNDS_FILL = '#ffffff';
-export const GRID_COLOUR = '#e3e6ea';
-export const AXIS_COLOUR = '#c3c8cf';
-export const LABEL_COLOUR = '#6b7280';
+
+// The scene's colours come from the element's stylesheet (playground.css), where each is a
+// documented custom property `--dvf-canvas-…` with a light and a dark default: setPalette
+// assigns them before a frame is drawn (ES bindings are live, so every importer sees them).
+export let CANVAS_BACKGROUND = '#eef0f3';
+export let BOUNDS_FILL = '#ffffff';
+export let GRID_COLOUR = '#e3e6ea';
+export let AXIS_COLOUR = '#c3c8cf';
+export let LABEL_COLOUR = '#6b7280';
 export const LABEL_FONT = '11px system-ui, sans-serif';
-export const OBSTACLE_FILL = '#4b5563';
-export const INFLUENCE_STROKE = '#9ca3af';
-export const INFLUENCE_FILL = 'rgba(156, 163, 175, 0.14)';
-export const FIELD_COLOUR = '#94a3b8';
-export const CURVE_COLOUR = '#7c3aed';
+export let OBSTACLE_FILL = '#4b5563';
+export let INFLUENCE_STROKE = '#9ca3af';
+export let INFLUENCE_FILL = 'rgba(156, 163, 175, 0.14)';
+export let FIELD_COLOUR = '#94a3b8';
+export let CURVE_COLOUR = '#7c3aed';
 export const VIRTUAL_OBSTACLE_COLOUR = '#dc2626';
 export const SENSE_COLOUR = 'rgba(37, 99, 235, 0.35)';
-export const HANDLE_FILL = '#ffffff';
-export const HANDLE_STROKE = '#111827';
-export const SELECTION_COLOUR = '#2563eb';
+export let HANDLE_FILL = '#ffffff';
+export let HANDLE_STROKE = '#111827';
+export let SELECTION_COLOUR = '#2563eb';
 /** The faint halo of the inspected robot. */
 export const FOCUS_HALO = 'rgba(37, 99, 235, 0.12)';
 /** The outline of a robot's body. */
-export const BODY_OUTLINE = '#1f2937';
+export let BODY_OUTLINE = '#1f2937';
 /** The fill under a goal's dashed outline. */
-export const GOAL_FILL = 'rgba(255, 255, 255, 0.7)';
+export let GOAL_FILL = 'rgba(255, 255, 255, 0.7)';
+
+/**
+ * The custom properties of the scene's colours (playground.css), by the name setPalette
+ * takes them under. The plots' text, axes and pair line are here too (panels/plots.js).
+ */
+export const PALETTE_PROPERTIES = {
+  canvasBackground: '--dvf-canvas-background',
+  boundsFill: '--dvf-canvas-bounds',
+  grid: '--dvf-canvas-grid',
+  axis: '--dvf-canvas-axis',
+  label: '--dvf-canvas-label',
+  obstacle: '--dvf-canvas-obstacle',
+  influenceStroke: '--dvf-canvas-influence',
+  influenceFill: '--dvf-canvas-influence-fill',
+  field: '--dvf-canvas-field',
+  curve: '--dvf-canvas-curve',
+  handleFill: '--dvf-canvas-handle',
+  outline: '--dvf-canvas-outline',
+  selection: '--dvf-accent',
+  goalFill: '--dvf-canvas-goal-fill',
+  plotText: '--dvf-plot-text',
+  plotAxis: '--dvf-plot-axis',
+  plotPair: '--dvf-plot-pair',
+};
+
+/**
+ * The palette of the element whose shadow-root part `node` is: each of PALETTE_PROPERTIES
+ * read from its computed style (the stylesheet resolves each to the page's value or the
+ * theme's default).
+ * @param {Element} node
+ * @returns {Record<keyof typeof PALETTE_PROPERTIES, string>}
+ */
+export function readPalette(node) {
+  const style = getComputedStyle(node);
+  /** @type {any} */
+  const p = {};
+  for (const [key, prop] of Object.entries(PALETTE_PROPERTIES)) {
+    p[key] = style.getPropertyValue(prop.replace('--dvf-', '--pg-')).trim();
+  }
+  return p;
+}
+
+/** Makes palette `p` (readPalette) the colours the painters draw with. */
+export function setPalette(p) {
+  CANVAS_BACKGROUND = p.canvasBackground || CANVAS_BACKGROUND;
+  BOUNDS_FILL = p.boundsFill || BOUNDS_FILL;
+  GRID_COLOUR = p.grid || GRID_COLOUR;
+  AXIS_COLOUR = p.axis || AXIS_COLOUR;
+  LABEL_COLOUR = p.label || LABEL_COLOUR;
+  OBSTACLE_FILL = p.obstacle || OBSTACLE_FILL;
+  INFLUENCE_STROKE = p.influenceStroke || INFLUENCE_STROKE;
+  INFLUENCE_FILL = p.influenceFill || INFLUENCE_FILL;
+  FIELD_COLOUR = p.field || FIELD_COLOUR;
+  CURVE_COLOUR = p.curve || CURVE_COLOUR;
+  HANDLE_FILL = p.handleFill || HANDLE_FILL;
+  HANDLE_STROKE = p.outline || HANDLE_STROKE;
+  BODY_OUTLINE = p.outline || BODY_OUTLINE;
+  SELECTION_COLOUR = p.selection || SELECTION_COLOUR;
+  GOAL_FILL = p.goalFill || GOAL_FILL;
+}
 
 /** Robot glyph: length nose to tail and width at the tail. */
 export const ROBOT_LENGTH_PX = 18;

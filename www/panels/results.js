@@ -1,0 +1,155 @@
+// The results panel: what `dvf simulate` reports for the scenario (the run from its starts,
+// README.md, "The command line"): per robot when it converged and its final errors, the
+// smallest distance between two robots, the smallest clearance to an obstacle and the
+// violations, and the report as JSON to copy. The run is made off the page's thread (a module
+// worker, playground/results-worker.js) after each change; a change made meanwhile starts it
+// again. Runs larger than AUTO_ROBOT_STEPS wait for the Compute button.
+
+import { togglePin } from '../playground/ghost.js';
+import { messageOf } from '../playground/message.js';
+import { runWorker } from '../playground/wasm-views.js';
+import { el } from './dom.js';
+
+/** Runs up to this many robot-steps start by themselves (the 100-robot crowd: about 2 s). */
+const AUTO_ROBOT_STEPS = 2_000_000;
+/** The table lists this many robots; Copy JSON has them all. */
+const TABLE_ROBOTS = 20;
+/** A change waits this long (ms) for the next before the run starts (a drag is many). */
+const SETTLE_MS = 300;
+
+/** @param {number | null} v @param {number} digits */
+const num = (v, digits = 3) => (v == null ? '—' : Number(v).toPrecision(digits));
+
+/** The report's figures, a line each; `safeRadius` (m) adds 2·r_ij beside the pair distance. */
+function summary(report, safeRadius) {
+  const converged = report.robots.filter((r) => r.converged_at != null);
+  const last = Math.max(...converged.map((r) => r.converged_at));
+  const safe = safeRadius == null ? '' : ` (2·r_ij = ${num(2 * safeRadius)} m)`;
+  return [
+    `${converged.length} of ${report.robots.length} robots converged${converged.length ? `, the last at ${last.toFixed(2)} s` : ''} (run of ${report.time} s, ${report.steps} steps)`,
+    `min distance between two robots: ${report.min_pair_distance == null ? 'none' : `${num(report.min_pair_distance)} m`}${safe}`,
+    `min clearance to an obstacle: ${report.min_obstacle_clearance == null ? 'none' : `${num(report.min_obstacle_clearance)} m`}`,
+    `violations: ${report.violations}`,
+  ];
+}
+
+export class ResultsPanel {
+  /** @param {import('../playground/controller.js').Controller} controller */
+  constructor(controller) {
+    this.c = controller;
+    this.box = controller.$('results');
+    /** @type {Worker | null} */
+    this.worker = null;
+    this.id = 0;
+    /** @type {any} the last report shown */
+    this.report = null;
+    /** @type {ReturnType<typeof setTimeout> | null} */
+    this.timer = null;
+    controller.$('copy-results').addEventListener('click', () => this.copy());
+    controller.$('pin').addEventListener('click', () => togglePin(controller));
+  }
+
+  /** The pinned run (playground/ghost.js): its figures above the current run's, and the Pin button. */
+  showGhost() {
+    const c = this.c;
+    const box = c.$('pinned');
+    const pin = c.$('pin');
+    pin.textContent = c.ghost ? 'Unpin' : c.pinning ? 'Pinning…' : 'Pin';
+    box.hidden = !c.ghost;
+    if (!c.ghost) return;
+    const lines = summary(c.ghost.report, null);
+    box.replaceChildren(el('p', `Pinned run (faded), ${c.ghost.name}:`, 'muted'), ...lines.map((t) => el('p', t)));
+  }
+
+  /** The scenario changed: its results are computed again (after SETTLE_MS). */
+  stale() {
+    if (!this.c.host.hasAttribute('controls')) return;
+    this.report = null;
+    delete this.box.dataset.ready;
+    this.c.$('copy-results').disabled = true;
+    if (this.timer) clearTimeout(this.timer);
+    this.stop();
+    const s = this.c.model;
+    const steps = Math.round(s.duration / s.dt);
+    if (s.robots.length * steps > AUTO_ROBOT_STEPS) {
+      const button = el('button', 'Compute');
+      button.type = 'button';
+      button.dataset.id = 'compute-results';
+      button.addEventListener('click', () => this.start());
+      this.box.replaceChildren(
+        el(
+          'p',
+          `A run of ${s.robots.length.toLocaleString('en')} robots over ${steps.toLocaleString('en')} steps: `,
+          'muted',
+        ),
+        button,
+      );
+      return;
+    }
+    this.box.replaceChildren(el('p', 'Running the scenario…', 'muted'));
+    this.timer = setTimeout(() => this.start(), SETTLE_MS);
+  }
+
+  /** Ends a run in progress. */
+  stop() {
+    this.worker?.terminate();
+    this.worker = null;
+  }
+
+  /** Runs the scenario in a worker and shows its report. */
+  start() {
+    this.timer = null;
+    this.stop();
+    const id = ++this.id;
+    const worker = runWorker();
+    this.worker = worker;
+    this.box.replaceChildren(el('p', 'Running the scenario…', 'muted'));
+    worker.onmessage = (e) => {
+      if (e.data.id !== id) return;
+      this.stop();
+      if (e.data.error) this.box.replaceChildren(el('p', `Could not run the scenario: ${messageOf(e.data)}`));
+      else this.show(e.data.report);
+    };
+    worker.postMessage({ id, scenario: this.c.scenario() });
+  }
+
+  /** Shows `report` (the JSON of `dvf simulate`). */
+  show(report) {
+    this.report = report;
+    this.c.$('copy-results').disabled = false;
+    const lines = summary(report, this.c.model.params.safe_radius);
+    const table = el('table', undefined, 'results-table');
+    const head = el('tr');
+    for (const h of ['robot', 'converged at (s)', 'position error (m)', 'heading error (rad)'])
+      head.append(el('th', h));
+    table.append(head);
+    report.robots.slice(0, TABLE_ROBOTS).forEach((r, i) => {
+      const row = el('tr');
+      row.append(
+        el('td', String(i + 1)),
+        el('td', r.converged_at == null ? 'not' : r.converged_at.toFixed(2)),
+        el('td', num(r.position_error, 2)),
+        el('td', num(r.heading_error, 2)),
+      );
+      table.append(row);
+    });
+    const more = report.robots.length - TABLE_ROBOTS;
+    this.box.replaceChildren(
+      ...lines.map((t) => el('p', t)),
+      table,
+      ...(more > 0 ? [el('p', `… and ${more.toLocaleString('en')} more (Copy JSON has them all).`, 'muted')] : []),
+    );
+    this.box.dataset.ready = '';
+  }
+
+  /** Copies the report as JSON (the text `dvf simulate` prints). */
+  async copy() {
+    if (!this.report) return;
+    try {
+      await navigator.clipboard.writeText(JSON.stringify(this.report));
+      this.c.showMessage('The results are on the clipboard as JSON.', { info: true });
+    } catch (e) {
+      this.c.showMessage(`Could not copy the results: ${messageOf(e)}`);
+    }
+  }
+}

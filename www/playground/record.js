@@ -1,0 +1,105 @@
+// Recording what the canvas shows: a PNG at 1×, 2× or 4× the CSS size (drawn anew at that
+// density, not scaled up), and a WebM video through the browser's own MediaRecorder, both with
+// the scenario's title and the time stamped in (the page's clock and title are HTML over the
+// canvas, not in it).
+
+import { downloadBlob, fileStem } from '../io.js';
+import { messageOf } from './message.js';
+
+/** Frames per second of a recording (the canvas is captured when it changes, at most this). */
+const RECORD_FPS = 30;
+/** A recording hands over its data this often (ms): the progress shown. */
+const RECORD_SLICE_MS = 500;
+/** The containers tried, best first. */
+const WEBM_TYPES = ['video/webm;codecs=vp9', 'video/webm;codecs=vp8', 'video/webm'];
+
+/** Draws the picture of controller `c` at `scale` times the CSS size and offers it as a PNG. */
+export function exportPng(c, scale) {
+  const canvas = document.createElement('canvas');
+  c.painter.draw({ canvas, dpr: scale });
+  canvas.toBlob((blob) => {
+    if (blob) downloadBlob(blob, `${fileStem(c.model.name)}-${scale}x.png`);
+    else c.showMessage('PNG: the browser could not encode the picture');
+  }, 'image/png');
+  c.requestDraw();
+}
+
+/** A WebM recording of one playground's canvas. */
+export class Recorder {
+  /** @param {import('./controller.js').Controller} controller */
+  constructor(controller) {
+    this.c = controller;
+    /** @type {MediaRecorder | null} */
+    this.recorder = null;
+    /** @type {Blob[]} */
+    this.chunks = [];
+    this.bytes = 0;
+    this.startedMs = 0;
+  }
+
+  get active() {
+    return this.recorder !== null;
+  }
+
+  /** Starts recording, or stops (and offers the file) when recording. */
+  toggle() {
+    if (this.recorder) this.stop();
+    else this.start();
+  }
+
+  start() {
+    const c = this.c;
+    const type = typeof MediaRecorder === 'undefined' ? null : WEBM_TYPES.find((t) => MediaRecorder.isTypeSupported(t));
+    if (!type) {
+      c.showMessage('Record: this browser cannot record a canvas as WebM (MediaRecorder)');
+      return;
+    }
+    try {
+      const stream = c.canvas.captureStream(RECORD_FPS);
+      const recorder = new MediaRecorder(stream, { mimeType: type });
+      this.chunks = [];
+      this.bytes = 0;
+      recorder.ondataavailable = (e) => {
+        if (e.data.size) {
+          this.chunks.push(e.data);
+          this.bytes += e.data.size;
+        }
+        this.progress();
+      };
+      recorder.onstop = () => this.finish(type);
+      recorder.start(RECORD_SLICE_MS);
+      this.recorder = recorder;
+      this.startedMs = performance.now();
+    } catch (e) {
+      c.showMessage(`Record: ${messageOf(e)}`);
+      return;
+    }
+    c.showMessage('Recording: 0.0 s', { info: true, source: 'record', actions: [['Stop', () => this.stop()]] });
+    c.toolbar.update();
+    c.requestDraw();
+  }
+
+  stop() {
+    if (!this.recorder) return;
+    this.recorder.stop();
+    this.recorder = null;
+    this.c.toolbar.update();
+  }
+
+  /** The recording's length and size, over the canvas. */
+  progress() {
+    const c = this.c;
+    if (c.messageSource !== 'record' || !this.recorder) return;
+    const s = (performance.now() - this.startedMs) / 1000;
+    c.$('message-text').textContent = `Recording: ${s.toFixed(1)} s, ${(this.bytes / 1e6).toFixed(1)} MB`;
+  }
+
+  finish(type) {
+    const c = this.c;
+    c.clearMessage('record');
+    const blob = new Blob(this.chunks, { type: type.split(';')[0] });
+    this.chunks = [];
+    downloadBlob(blob, `${fileStem(c.model.name)}.webm`);
+    c.requestDraw();
+  }
+}

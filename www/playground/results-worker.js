@@ -1,0 +1,39 @@
+// A module worker that runs a scenario to its end off the page's thread (`Run`: the run that
+// `dvf simulate` makes) and posts its report, the figures of the results panel
+// (panels/results.js), and with `trajectories` its trajectories too (a pinned run,
+// ghost.js). Messages in: first {wasm}, where the page loads the module from (its URL or its
+// bytes: wasm-views.js, runWorker), then {id, scenario, trajectories?}; out: {id, report,
+// trajectories?, samples?} or {id, error}.
+
+import init, { Run } from '../pkg/dvf.js';
+
+/** @type {Promise<unknown> | null} the module, loaded on the first message */
+let ready = null;
+
+self.onmessage = async (e) => {
+  if ('wasm' in e.data) {
+    ready ??= init({ module_or_path: e.data.wasm });
+    return;
+  }
+  const { id, scenario } = e.data;
+  try {
+    if (!ready) throw new Error('no wasm module was given to the worker');
+    await ready;
+    const run = new Run(scenario);
+    try {
+      if (e.data.trajectories) {
+        const trajectories = run.trajectories();
+        self.postMessage(
+          { id, report: run.report(), trajectories, samples: run.sampleCount },
+          { transfer: [trajectories.buffer] },
+        );
+      } else {
+        self.postMessage({ id, report: run.report() });
+      }
+    } finally {
+      run.free();
+    }
+  } catch (err) {
+    self.postMessage({ id, error: String(err instanceof Error ? err.message : err) });
+  }
+};
