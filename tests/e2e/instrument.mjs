@@ -521,12 +521,22 @@ await run(async ({ base, newPage }) => {
   await section('time', async () => {
     const page = await openMain(newPage, base);
     const time = () => page.evaluate((s) => document.querySelector(s).cache.time, PG);
+    // A seek starts over from t = 0 at once and the clock is drawn on the next frame: wait
+    // until the time has left `was`, the seek has ended and the clock shows the time reached.
+    const settled = (was) =>
+      page.waitForFunction(
+        ([s, was]) => {
+          const el = document.querySelector(s);
+          const clock = el.shadowRoot.querySelector('[data-id="clock"]').textContent;
+          const t = el.cache.time;
+          return t !== was && !clock.includes('going') && clock.includes(`t = ${t.toFixed(2)} s`);
+        },
+        [PG, was],
+      );
     const scrubber = part(page, 'scrubber');
+    const start = await time();
     await scrubber.fill('500');
-    await page.waitForFunction(
-      (s) => !document.querySelector(s).shadowRoot.querySelector('[data-id="clock"]').textContent.includes('going'),
-      PG,
-    );
+    await settled(start);
     const s = await scenarioOf(page);
     const half = await time();
     // The scrubber has 1,000 positions: the time is within one step of the middle.
@@ -534,10 +544,7 @@ await run(async ({ base, newPage }) => {
     const box = await part(page, 'plots').boundingBox();
     const g = await page.evaluate((s) => document.querySelector(s).plotGeometry, PG);
     await page.mouse.click(box.x + g[0].x0 + (g[0].x1 - g[0].x0) * 0.2, box.y + box.height * 0.75);
-    await page.waitForFunction(
-      (s) => !document.querySelector(s).shadowRoot.querySelector('[data-id="clock"]').textContent.includes('going'),
-      PG,
-    );
+    await settled(half);
     const fifth = await time();
     // A click lands on a whole CSS pixel of the axis: within one pixel's worth of time.
     const pxTime = s.duration / (g[0].x1 - g[0].x0);
