@@ -85,12 +85,13 @@ picture: build-wasm
 BENCH_STEPS ?= 200
 bench: bench-native bench-wasm bench-browser bench-peer
 
-# Each figure is a JSON line, printed and appended to test-results/bench-steps.jsonl.
+# Each figure is a JSON line, printed and appended to test-results/bench-steps.jsonl. Native on one
+# thread, as the wasm build runs (benches/peer.rs measures the threads).
 bench-native: build-wasm
 	cargo build --release
 	mkdir -p test-results
 	for n in 1000 10000 1000 10000 1000 10000; do \
-		./target/release/dvf bench --robots $$n --steps $(BENCH_STEPS) | tee -a test-results/bench-steps.jsonl; \
+		RAYON_NUM_THREADS=1 ./target/release/dvf bench --robots $$n --steps $(BENCH_STEPS) | tee -a test-results/bench-steps.jsonl; \
 		node benches/wasm.mjs --robots $$n --steps $(BENCH_STEPS) | tee -a test-results/bench-steps.jsonl; \
 	done
 
