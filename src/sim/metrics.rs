@@ -153,16 +153,7 @@ impl Metrics {
                 // The lists may hold pairs a little beyond their reach (their skin): those are
                 // left out, so that the pairs seen are those within the reach, whenever the
                 // lists were built.
-                let reach2 = o.list_reach * o.list_reach;
-                for i in 0..n {
-                    let p = robots[i].pose.p;
-                    for &j in o.near.of(i) {
-                        let j = j as usize;
-                        if j > i && robots[j].pose.p.distance_squared(p) <= reach2 {
-                            pair(i, j, &mut min);
-                        }
-                    }
-                }
+                listed_pairs(robots, o.near, o.list_reach, |i, j| pair(i, j, &mut min));
                 // No pair within the reach: the closest pair matters only while no closer one
                 // has been seen, which a swarm at bounded density leaves behind at once.
                 if min.is_none() && self.min_pair.map_or(true, |m| m > o.list_reach) {
@@ -185,6 +176,26 @@ impl Metrics {
 
 /// Violation events: the pairs violating `now` that were not at the last observation (`was`;
 /// both lists ascending: a merge).
+/// The pairs `(i, j)`, `i < j`, in ascending order, of the robots `near` lists within `reach`
+/// of each other: the lists may hold pairs a little beyond their reach (their skin, see
+/// `Simulation::find_neighbours`), which are left out, so that these are exactly the pairs
+/// within the reach whenever the lists were built.
+pub(super) fn listed_pairs(
+    robots: &[Robot],
+    near: &Neighbours,
+    reach: f64,
+    mut each: impl FnMut(usize, usize),
+) {
+    for (i, r) in robots.iter().enumerate() {
+        for &j in near.of(i) {
+            let j = j as usize;
+            if j > i && robots[j].pose.p.distance_squared(r.pose.p) <= reach * reach {
+                each(i, j);
+            }
+        }
+    }
+}
+
 fn new_events(was: &[(u32, u32)], now: &[(u32, u32)]) -> usize {
     let mut was = was.iter().peekable();
     let mut events = 0;

@@ -111,11 +111,11 @@ pub struct Simulation {
     // The obstacles near each point (rebuilt only when an obstacle is edited).
     obstacle_cells: ObstacleCells,
     // Scratch, reused every step.
-    // The Verlet lists (see `find_neighbours`): built at `positions` for `lists_reach` and its
-    // skin.
+    // The Verlet lists (see `find_neighbours`): built at `positions` for `reach` and its skin.
     near: Neighbours,
     positions: Vec<DVec2>,
-    lists_reach: f64,
+    // `list_reach(&params)`, once: the parameters of a simulation never change.
+    reach: f64,
     scratch: Scratch,
     // The parallel step (native only): whether it is on, its buffers (one per chunk), and the
     // evaluations before they are stored.
@@ -162,7 +162,7 @@ impl Simulation {
             obstacle_cells: ObstacleCells::default(),
             near: Neighbours::new(),
             positions: Vec::with_capacity(n),
-            lists_reach: f64::NAN,
+            reach: list_reach(&s.params),
             scratch: Scratch::default(),
             #[cfg(not(target_arch = "wasm32"))]
             parallel: true,
@@ -254,31 +254,6 @@ impl Simulation {
         self.params.sense_radius.max(2.0 * self.params.safe_radius)
     }
 
-    /// The reach of the neighbour lists: the sensed robots that can change a command, and the
-    /// collision distance `2·r_ij`. A sensed robot changes a command only within the reach of
-    /// the virtual obstacle's choice ([`crate::swarm::cluster_reach`]: the avoidance range
-    /// `2(R_c + ε)`, twice that where a parked formation is looked for) or within the barrier's
-    /// [`safety::neighbour_reach`] at the fastest speed `v_max` allows; beyond both, it is
-    /// sensed and ignored, so the lists leave it out with the same bits. In a crowd with the
-    /// default avoidance that is 16 m instead of `R_s` = 20 (10 m with the paper's). Without
-    /// `v_max` and with a barrier, the sensing radius.
-    // Not inlined: four callers, one copy in the wasm module.
-    #[inline(never)]
-    fn reach(&self) -> f64 {
-        let p = &self.params;
-        let range = pair_range(p.avoid_radius, p.transition_width);
-        let avoidance =
-            cluster_reach(range, p.avoidance) * (1.0 + safety::REACH_MARGIN) + safety::REACH_MARGIN;
-        let barrier = match (p.barrier_rate, p.v_max) {
-            (None, _) => 0.0,
-            (Some(_), Some(v)) => safety::neighbour_reach(p, v),
-            (Some(_), None) => f64::INFINITY,
-        };
-        p.sense_radius
-            .min(avoidance.max(barrier))
-            .max(2.0 * p.safe_radius)
-    }
-
     fn build_obstacle_cells(&mut self) {
         self.obstacle_cells = match self.neighbourhood {
             Neighbourhood::Grid => ObstacleCells::build(&self.obstacles, self.sense_reach()),
@@ -291,7 +266,7 @@ impl Simulation {
         !self.independent && self.neighbourhood == Neighbourhood::Grid
     }
 
-    /// Keeps the grid's lists holding every pair within [`Self::reach`] where the robots are
+    /// Keeps the grid's lists holding every pair within `list_reach` where the robots are
     /// now. They are built for a reach widened by a skin of [`SKIN`]`·reach` and rebuilt only
     /// once some robot has moved more than half the skin since (Verlet lists): until then a
     /// pair within the reach now was within the widened reach then. Readers test the distance
@@ -302,12 +277,12 @@ impl Simulation {
         if !self.listed() {
             return;
         }
-        let reach = self.reach();
+        let reach = self.reach;
         let skin = SKIN * reach;
         // Round-off in the distances (a few ulps) must not spend the whole skin.
         let half = 0.5 * skin * (1.0 - 1e-6);
+        // Never built (`positions` is empty until then), or some robot moved too far since.
         let fresh = self.positions.len() == self.robots.len()
-            && self.lists_reach == reach
             && self
                 .positions
                 .iter()
@@ -319,7 +294,6 @@ impl Simulation {
             self.positions.clear();
             self.positions.extend(self.robots.iter().map(|r| r.pose.p));
             self.near.build(&self.positions, reach + skin);
-            self.lists_reach = reach;
         }
     }
 
@@ -368,7 +342,7 @@ impl Simulation {
         let listed = self.listed();
         // The grid's lists hold the robots within their reach: when that is at most the sensing
         // radius, they are the sensed robots that can change the command (see `reach`).
-        let r = if listed { self.reach().min(rs) } else { rs };
+        let r = if listed { self.reach.min(rs) } else { rs };
         let me = self.robots[i];
         let neighbours = &mut scratch.neighbours;
         neighbours.clear();
@@ -514,7 +488,7 @@ impl Simulation {
     /// Updates the metrics from the current state (after [`Self::evaluate_all`], whose
     /// neighbour lists it reuses).
     fn observe(&mut self) {
-        let (reach, list_reach) = (self.sense_reach(), self.reach());
+        let (reach, list_reach) = (self.sense_reach(), self.reach);
         self.metrics.observe(&Observed {
             time: self.time,
             params: &self.params,
@@ -539,16 +513,11 @@ impl Simulation {
         if !self.listed() {
             return None;
         }
-        let reach = self.reach();
+        let r = &self.robots;
         let mut m = f64::INFINITY;
-        for (i, r) in self.robots.iter().enumerate() {
-            for &j in self.near.of(i) {
-                let q = self.robots[j as usize].pose.p;
-                if j as usize > i && q.distance_squared(r.pose.p) <= reach * reach {
-                    m = m.min(r.pose.p.distance(q));
-                }
-            }
-        }
+        metrics::listed_pairs(r, &self.near, self.reach, |i, j| {
+            m = m.min(r[i].pose.p.distance(r[j].pose.p));
+        });
         m.is_finite().then_some(m)
     }
 
@@ -657,6 +626,28 @@ impl Simulation {
             ),
         }
     }
+}
+
+/// The reach of the neighbour lists: the sensed robots that can change a command, and the
+/// collision distance `2·r_ij`. A sensed robot changes a command only within the reach of
+/// the virtual obstacle's choice ([`crate::swarm::cluster_reach`]: the avoidance range
+/// `2(R_c + ε)`, twice that where a parked formation is looked for) or within the barrier's
+/// [`safety::neighbour_reach`] at the fastest speed `v_max` allows; beyond both, it is
+/// sensed and ignored, so the lists leave it out with the same bits. In a crowd with the
+/// default avoidance that is 16 m instead of `R_s` = 20 (10 m with the paper's). Without
+/// `v_max` and with a barrier, the sensing radius.
+fn list_reach(p: &Params) -> f64 {
+    let range = pair_range(p.avoid_radius, p.transition_width);
+    let avoidance =
+        cluster_reach(range, p.avoidance) * (1.0 + safety::REACH_MARGIN) + safety::REACH_MARGIN;
+    let barrier = match (p.barrier_rate, p.v_max) {
+        (None, _) => 0.0,
+        (Some(_), Some(v)) => safety::neighbour_reach(p, v),
+        (Some(_), None) => f64::INFINITY,
+    };
+    p.sense_radius
+        .min(avoidance.max(barrier))
+        .max(2.0 * p.safe_radius)
 }
 
 /// From this many robots a step evaluates them on several threads (natively): below, rayon's
