@@ -247,6 +247,10 @@ export declare class DvfPlayground extends HTMLElement {
   scenario(): Scenario | null;
   /** The preset shown, or null once the scene has been edited or imported. */
   presetName(): string | null;
+  /** How many robots the scene has (0 before the first scene), without the copy `scenario()` makes. */
+  readonly robotCount: number;
+  /** Offers the scenario as a JSON file (a large scene is written off the page's thread); resolves once offered. */
+  exportJson(): Promise<void>;
   /** Plays the clock (from t = 0 again after the end). */
   play(): void;
   pause(): void;

@@ -53,6 +53,11 @@
 //   scenario()            the current scenario (edits included) as a plain object (a copy), in
 //                         the scenario format; null before the first scene
 //   presetName()          the preset shown, or null once the scene has been edited or imported
+//   robotCount            how many robots the scene has (0 before the first scene), without
+//                         the copy scenario() makes
+//   exportJson()          offers the scenario as a JSON file (the Scenario JSON button; a large
+//                         scene is written off the page's thread); resolves once offered, and
+//                         shows a message if it could not be written
 //   play(), pause()       the clock (play after the end starts again from t = 0)
 //   reset()               back to t = 0 at the scenario's starts, trails cleared
 //   step(n = 1)           advances n steps of dt and pauses; returns the steps taken; throws
@@ -365,6 +370,14 @@ export class DvfPlayground extends Base {
 
   presetName() {
     return this.#controller?.presetName() ?? null;
+  }
+
+  get robotCount() {
+    return this.#controller?.pg ? this.#controller.model.robots.length : 0;
+  }
+
+  exportJson() {
+    return this.#controller?.exportJson() ?? Promise.resolve();
   }
 
   play() {

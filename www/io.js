@@ -5,7 +5,7 @@
 
 import { exactJson } from './exact-json.js';
 import { Playground } from './pkg/dvf.js';
-import { POSE_STRIDE, STATUS, STATUS_STRIDE, wasmReady } from './playground/wasm-views.js';
+import { POSE_STRIDE, runWorker, STATUS, STATUS_STRIDE, wasmReady } from './playground/wasm-views.js';
 
 /** The fragment that holds a scenario starts with this. */
 export const FRAGMENT_PREFIX = '#s=';
@@ -223,10 +223,38 @@ export async function fetchScenarioText(url) {
   return text;
 }
 
-/** Offers `scenario` as a JSON file that `dvf simulate` reads. */
-export function downloadScenarioJson(scenario) {
-  const text = `${exactJson(scenario, 2)}\n`;
+/**
+ * Scenarios of more robots than this are written off the page's thread (the 10,000-robot
+ * crowd takes about 150 ms to write, 1,000 robots about 15).
+ */
+const JSON_WORKER_ABOVE = 1000;
+
+/**
+ * Offers `scenario` as a JSON file that `dvf simulate` reads; a large one is written in the
+ * page's worker (playground/results-worker.js). Resolves once the file is offered; rejects
+ * with the worker's error.
+ */
+export async function downloadScenarioJson(scenario) {
+  const text =
+    scenario.robots.length > JSON_WORKER_ABOVE ? await jsonInWorker(scenario) : `${exactJson(scenario, 2)}\n`;
   downloadBlob(new Blob([text], { type: 'application/json' }), `${fileStem(scenario.name)}.json`);
+}
+
+/** The JSON file of `scenario`, written in a worker of its own. */
+function jsonInWorker(scenario) {
+  return new Promise((resolve, reject) => {
+    const worker = runWorker();
+    worker.onmessage = (e) => {
+      worker.terminate();
+      if ('text' in e.data) resolve(e.data.text);
+      else reject(new Error(e.data.error));
+    };
+    worker.onerror = (e) => {
+      worker.terminate();
+      reject(new Error(e.message || 'the worker failed'));
+    };
+    worker.postMessage({ id: 0, json: scenario });
+  });
 }
 
 /** Offers CSV text `pieces` (trajectoriesCsv) as a file named after `scenario`. */

@@ -4,10 +4,15 @@
 // io.js, viewSuffix).
 
 import './dvf-playground.js';
-import { downloadScenarioJson, FRAGMENT_PREFIX, fragmentFor, MAX_LINK_CHARS, parseFragment, viewSuffix } from './io.js';
+import { FRAGMENT_PREFIX, fragmentFor, MAX_LINK_CHARS, parseFragment, viewSuffix } from './io.js';
 import { messageOf } from './playground/message.js';
 
 const playground = /** @type {import('./dvf-playground.js').DvfPlayground} */ (document.getElementById('playground'));
+/**
+ * The most robots a link can hold: each takes at least 69 characters of the fragment
+ * (`{"start":[0,0,0],"goal":[0,0,0]},` URI-encoded), so more than MAX_LINK_CHARS / 69 never fit.
+ */
+const LINK_ROBOTS_MAX = Math.floor(MAX_LINK_CHARS / 69);
 /** The fragment this page last wrote, so that its own hashchange is not read back. */
 let written = location.hash;
 /** The scene's part of the fragment (empty when the scene is too big for a link). */
@@ -44,16 +49,25 @@ function sceneChanged() {
   // scene) and the message over the canvas says so, offering the file instead. The plain
   // JSON's length first: the link's within a few characters, and a crowd's exact digits
   // (fragmentFor) take longer to write than a frame.
+  // A scene of more than LINK_ROBOTS_MAX robots cannot fit at all and is not written.
   const preset = playground.presetName();
-  const scenario = preset ? null : playground.scenario();
+  const robots = playground.robotCount;
+  const scenario = preset || robots > LINK_ROBOTS_MAX ? null : playground.scenario();
   const plain = scenario ? FRAGMENT_PREFIX.length + encodeURIComponent(JSON.stringify(scenario)).length : 0;
-  const fragment = preset ? `#${encodeURIComponent(preset)}` : plain <= MAX_LINK_CHARS ? fragmentFor(scenario) : null;
+  const fragment = preset
+    ? `#${encodeURIComponent(preset)}`
+    : scenario && plain <= MAX_LINK_CHARS
+      ? fragmentFor(scenario)
+      : null;
   scenePart = fragment && fragment.length <= MAX_LINK_CHARS ? fragment : '';
   writeAddress();
   if (!scenePart) {
+    const size = scenario
+      ? `${(fragment?.length ?? plain).toLocaleString('en')} characters`
+      : `${robots.toLocaleString('en')} robots`;
     playground.showMessage(
-      `This scene is too big for a link (${(fragment?.length ?? plain).toLocaleString('en')} characters; a link holds at most ${MAX_LINK_CHARS.toLocaleString('en')}), so the address no longer holds it. Save it with Scenario JSON; Import… opens the file again.`,
-      { info: true, actions: [['Scenario JSON', () => downloadScenarioJson(playground.scenario())]] },
+      `This scene is too big for a link (${size}; a link holds at most ${MAX_LINK_CHARS.toLocaleString('en')} characters, about ${LINK_ROBOTS_MAX.toLocaleString('en')} robots), so the address no longer holds it. Save it with Scenario JSON; Import… opens the file again.`,
+      { info: true, actions: [['Scenario JSON', () => playground.exportJson()]] },
     );
     tooBigShown = true;
   } else if (tooBigShown) {

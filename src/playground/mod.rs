@@ -120,7 +120,7 @@ impl Live {
             near: Vec::new(),
             neighbours: Vec::new(),
         };
-        live.reset();
+        live.start();
         Ok(live)
     }
 
@@ -157,6 +157,11 @@ impl Live {
     /// Back to `t = 0` at the scenario's starts; clears the trails.
     pub fn reset(&mut self) {
         self.sim = Simulation::new(&self.scenario);
+        self.start();
+    }
+
+    /// The rest of a start at `t = 0` once `sim` is new: the clock, the trails, the prediction.
+    fn start(&mut self) {
         self.base_time = 0.0;
         self.base_steps = 0;
         self.trails = Trails::new(self.scenario.robots.len());

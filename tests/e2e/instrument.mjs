@@ -674,7 +674,7 @@ await run(async ({ base, newPage }) => {
     await page.context().close();
     await copy.context().close();
   });
-  // ---- Recording: a PNG at 4× with the title and time stamped in; a WebM video.
+  // ---- Recording: a PNG at 4× with the title and time stamped in; an SVG; a WebM video.
   await section('recording', async () => {
     const page = await openMain(newPage, base);
     const cssWidth = await part(page, 'canvas').evaluate((e) => e.clientWidth);
@@ -684,6 +684,54 @@ await run(async ({ base, newPage }) => {
     const bytes = readFileSync(await png.path());
     const width = bytes.readUInt32BE(16);
     check(width === cssWidth * 4, `the PNG at 4× is ${width} px wide for ${cssWidth} CSS px`);
+    // SVG: the picture as vectors, mark for mark (the same painters: render/svg.js).
+    const svgOf = async (p) => {
+      const [d] = await Promise.all([p.waitForEvent('download'), part(p, 'export-svg').click()]);
+      const text = readFileSync(await d.path(), 'utf8');
+      return p.evaluate((t) => {
+        const doc = new DOMParser().parseFromString(t, 'image/svg+xml');
+        const root = doc.documentElement;
+        const texts = [...doc.querySelectorAll('text')];
+        return {
+          ok: root.nodeName === 'svg' && !doc.querySelector('parsererror'),
+          width: Number(root.getAttribute('width')),
+          trailColours: new Set(
+            [...doc.querySelectorAll('path[stroke-width="2.5"]')].map((e) => e.getAttribute('stroke')),
+          ).size,
+          texts: texts.map((e) => e.textContent),
+          // Each number is drawn twice, its halo (stroked) under it (filled): the filled ones.
+          numbers: texts
+            .filter((e) => /600 11px/.test(e.getAttribute('style') ?? '') && e.getAttribute('fill') !== 'none')
+            .map((e) => e.textContent),
+        };
+      }, text);
+    };
+    await page.evaluate((s) => document.querySelector(s).seek(10), PG);
+    const svg = await svgOf(page);
+    const title = await page.evaluate((s) => document.querySelector(s).scenario().name, PG);
+    check(
+      svg.ok && svg.width === cssWidth && svg.trailColours === 10 && svg.texts.some((t) => t.startsWith(title)),
+      `SVG: a well-formed picture ${svg.width} px wide (canvas ${cssWidth}) with the 10 robots' trails (${svg.trailColours} colours) and the title stamped in`,
+    );
+    // Robot numbers: Example 4's safe discs are wide enough on screen to number its robots;
+    // a crowd fitted in the view is not numbered until zoomed in.
+    check(
+      svg.numbers.length === 10 && svg.numbers.includes('1') && svg.numbers.includes('10'),
+      `Example 4's robots are numbered from 1 on the canvas (${svg.numbers.join(' ')})`,
+    );
+    await loadCrowd(page, 100);
+    const fitted = await svgOf(page);
+    const x = await page.evaluate((s) => document.querySelector(s).scenario().robots[0].start, PG);
+    await page.evaluate(
+      ([s, [x0, y0]]) => document.querySelector(s).setViewState({ box: [x0 - 6, y0 - 4, x0 + 6, y0 + 4] }),
+      [PG, x],
+    );
+    const zoomed = await svgOf(page);
+    check(
+      fitted.ok && fitted.numbers.length === 0 && zoomed.numbers.includes('1'),
+      `a crowd of 100 is numbered only when zoomed in (${fitted.numbers.length} numbers fitted; zoomed: ${zoomed.numbers.join(' ')})`,
+    );
+    await part(page, 'preset').selectOption(EXAMPLE4);
     await part(page, 'record').click();
     await part(page, 'play').click();
     await page.waitForFunction((s) => document.querySelector(s).cache.time > 1.5, PG);

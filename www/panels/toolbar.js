@@ -3,17 +3,9 @@
 // fit, and the exports and import. Without the `controls` attribute the stylesheet hides all
 // but play, step, reset and the field menu.
 
-import {
-  csvSize,
-  downloadCsv,
-  downloadScenarioJson,
-  formatBytes,
-  MAX_CSV_BYTES,
-  readScenarioFile,
-  trajectoriesCsv,
-} from '../io.js';
+import { csvSize, downloadCsv, formatBytes, MAX_CSV_BYTES, readScenarioFile, trajectoriesCsv } from '../io.js';
 import { addObstacleInView, addRobotInView, deleteSelection } from '../playground/actions.js';
-import { exportPng } from '../playground/record.js';
+import { exportPng, exportSvg } from '../playground/record.js';
 import { DEFAULT_SPEED, SPEEDS } from '../playground/loop.js';
 import { messageOf } from '../playground/message.js';
 import { el } from './dom.js';
@@ -106,8 +98,9 @@ export class Toolbar {
       c.viewChanged();
       c.requestDraw();
     });
-    $('export-json').addEventListener('click', () => downloadScenarioJson(c.scenario()));
+    $('export-json').addEventListener('click', () => c.exportJson());
     $('export-png').addEventListener('click', () => exportPng(c, Number($('png-scale').value)));
+    $('export-svg').addEventListener('click', () => exportSvg(c));
     $('record').addEventListener('click', () => c.recorder.toggle());
     $('export-csv').addEventListener('click', () => this.exportCsv());
     $('import').addEventListener('click', () => $('import-file').click());
@@ -117,7 +110,7 @@ export class Toolbar {
       input.value = '';
       if (!file) return;
       try {
-        c.importScenario(await readScenarioFile(file));
+        await c.importScenario(await readScenarioFile(file));
       } catch (e) {
         c.showMessage(`Could not import ${file.name}: ${messageOf(e)}`);
       }
@@ -138,7 +131,7 @@ export class Toolbar {
       c.showMessage(
         `CSV: the whole run is ${rows.toLocaleString('en')} rows, about ${formatBytes(bytes)}: more than the page writes (${formatBytes(MAX_CSV_BYTES)}). ` +
           'Save the Scenario JSON and run "dvf simulate scenario.json --csv out.csv" (the same format).',
-        { actions: [['Scenario JSON', () => downloadScenarioJson(s)]] },
+        { actions: [['Scenario JSON', () => c.exportJson()]] },
       );
       return;
     }

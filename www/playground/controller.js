@@ -17,7 +17,7 @@
 // commit reads the core's scenario once, so that the model holds the core's own values again
 // (and the bounds it resolves for a scenario that has none).
 
-import { fetchScenarioText } from '../io.js';
+import { downloadScenarioJson, fetchScenarioText } from '../io.js';
 import { buildLegend } from '../panels/legend.js';
 import { buildPlotsLegend } from '../panels/plots.js';
 import { ParamsPanel } from '../panels/params.js';
@@ -44,6 +44,13 @@ const VIEW_EVENT_MS = 400;
 const STEP_TIME_S = 0.1;
 /** θ(0) of the integral curves until the element says otherwise (degrees): the paper's Fig. 1. */
 export const DEFAULT_THETA0_DEG = 90;
+/** An import's last-place fix-ups (Controller.#exactify) up to this many are made at once. */
+const EXACT_AT_ONCE = 32;
+/** Larger ones work this long per task (ms), so that no task of the page runs long. */
+const EXACT_SLICE_MS = 30;
+/** Each preset's robot count and JSON text, made once per page (Controller.#presetOf). */
+let presetTexts = null;
+
 /** The field overlays. @type {import('../dvf-playground.js').FieldMode[]} */
 export const FIELD_MODES = ['arrows', 'curves', 'none'];
 
@@ -53,6 +60,9 @@ export const FIELD_MODES = ['arrows', 'curves', 'none'];
  */
 
 export class Controller {
+  /** An import's fix-ups still to make (#exactify): {pg, edits, next}, or null. */
+  #exact = null;
+
   /**
    * @param {HTMLElement} host the element: the `change` events go there
    * @param {ShadowRoot} root its shadow root, holding the template (template.js)
@@ -194,32 +204,50 @@ export class Controller {
     }
   }
 
-  /** Loads an imported scenario text as a new document that Undo takes back. Throws as load. */
-  importScenario(text) {
+  /**
+   * Loads an imported scenario text as a new document that Undo takes back; throws as load.
+   * A large file's last-place fix-ups (#exactify) go on a slice per task after the scene is
+   * shown; the `import` event comes once they are done.
+   */
+  async importScenario(text) {
     const before = this.pg ? this.text() : null;
-    this.load(text);
+    this.#replace(new Playground(text), null, text, true);
+    this.history.clear();
     if (before) this.history.push(before);
     this.toolbar.update();
     this.showMessage('');
+    await this.#applyExact();
     this.#emit('import');
   }
 
-  #replace(pg, presetName, wanted = null) {
+  /**
+   * Shows `pg` in place of the scene. With `wanted` (what the core read), its numbers are set
+   * exactly (#exactify): at once, or with `defer` and more than EXACT_AT_ONCE of them, in
+   * slices (#applyExact).
+   */
+  #replace(pg, presetName, wanted = null, defer = false) {
     const old = this.pg;
     this.pg = pg;
     old?.free();
-    if (wanted) this.#exactify(wanted);
+    this.#exact = null;
+    this.model = pg.scenario();
+    if (wanted) {
+      const edits = this.#exactify(wanted, this.model);
+      if (defer && edits.length > EXACT_AT_ONCE) {
+        this.#exact = { pg, edits, next: 0 };
+      } else if (edits.length) {
+        this.#runEdits(edits, 0, edits.length);
+        this.model = pg.scenario();
+      }
+    }
     this.views.attach(pg);
     this.loop.newScene();
     this.selection = null;
     this.focusRobot = 0;
     this.painter.newScene();
     this.camera.fit();
-    this.model = pg.scenario();
     this.generation += 1;
-    const model = JSON.stringify(this.model);
-    this.preset =
-      presetName ?? this.presetList.find((p) => JSON.stringify(presetScenario(p.name)) === model)?.name ?? null;
+    this.preset = presetName ?? this.#presetOf(this.model);
     this.toolbar.showPreset(this.preset);
     this.params.fill(this.model, this.root.activeElement);
     this.toolbar.update();
@@ -228,54 +256,131 @@ export class Controller {
   }
 
   /**
+   * Runs `edits[from..to)` (#exactify's), stopping at one the core refuses (a value it takes
+   * only a hair away: the core's values stay); returns where it stopped, `edits.length` then.
+   */
+  #runEdits(edits, from, to) {
+    let k = from;
+    try {
+      for (; k < to; k++) edits[k]();
+    } catch {
+      return edits.length;
+    }
+    return k;
+  }
+
+  /** Applies the pending fix-ups (#exact) EXACT_SLICE_MS at a time, a task each. */
+  async #applyExact() {
+    const job = this.#exact;
+    while (job && this.#exact === job) {
+      const end = performance.now() + EXACT_SLICE_MS;
+      while (job.next < job.edits.length && performance.now() < end) {
+        job.next = this.#runEdits(job.edits, job.next, job.next + 1);
+      }
+      if (job.next >= job.edits.length) {
+        this.#endExact();
+        return;
+      }
+      await new Promise((resolve) => setTimeout(resolve, 0));
+    }
+  }
+
+  /**
+   * Applies whatever fix-ups are pending at once: before anything reads the scenario, steps
+   * the clock or edits (the fix-ups are moves at t = 0 by index).
+   */
+  flushExact() {
+    const job = this.#exact;
+    if (!job) return;
+    job.next = this.#runEdits(job.edits, job.next, job.edits.length);
+    this.#endExact();
+  }
+
+  #endExact() {
+    this.#exact = null;
+    this.model = this.pg.scenario();
+    this.#changed();
+  }
+
+  /** The name of the preset whose scenario `model` is, or null (presetTexts, compared as JSON). */
+  #presetOf(model) {
+    presetTexts ??= new Map(
+      this.presetList.map((p) => {
+        const s = presetScenario(p.name);
+        return [p.name, { robots: s.robots.length, text: JSON.stringify(s) }];
+      }),
+    );
+    const same = [...presetTexts].filter(([, p]) => p.robots === model.robots.length);
+    if (!same.length) return null;
+    const text = JSON.stringify(model);
+    return same.find(([, p]) => p.text === text)?.[0] ?? null;
+  }
+
+  /**
    * After the core read scenario `wanted` (object or JSON text): the few numbers it read a unit
    * in the last place off (its fast number parser rounds twice; www/exact-json.js writes digits
    * it reads exactly wherever there are such digits) are set to the very values through the
    * fine-grained edits, so that a scene exported and imported is the same scene to the bit.
+   * `s` is the scenario the core read (pg.scenario()); returns those edits, to be run in order
+   * (#runEdits): the 10,000-robot crowd has about a hundred, half a millisecond each.
    */
-  #exactify(wanted) {
+  #exactify(wanted, s) {
+    /** @type {(() => void)[]} */
+    const edits = [];
     let w = wanted;
     try {
       if (typeof w === 'string') w = JSON.parse(w);
     } catch {
-      return;
+      return edits;
     }
-    const s = this.pg.scenario();
-    if (!Array.isArray(w?.robots) || w.robots.length !== s.robots.length) return;
+    if (!Array.isArray(w?.robots) || w.robots.length !== s.robots.length) return edits;
+    const pg = this.pg;
     const pose = (p, n) => Array.isArray(p) && p.length === n && p.every((v) => typeof v === 'number');
     const differs = (a, b) => a.some((v, j) => v !== b[j]);
-    try {
-      w.robots.forEach((r, i) => {
-        const have = s.robots[i];
-        if (pose(r.start, 3) && differs(r.start, have.start)) this.pg.moveRobot(i, r.start[0], r.start[1], r.start[2]);
-        if (pose(r.goal, 3) && differs(r.goal, have.goal)) this.pg.moveGoal(i, r.goal[0], r.goal[1], r.goal[2]);
-      });
-      (Array.isArray(w.obstacles) ? w.obstacles : []).forEach((o, k) => {
-        const have = s.obstacles[k];
-        if (!have) return;
-        if (pose(o.center, 2) && differs(o.center, have.center)) this.pg.moveObstacle(k, o.center[0], o.center[1]);
-        const r = typeof o.radius === 'number' ? o.radius : have.radius;
-        const infl = typeof o.influence === 'number' ? o.influence : have.influence;
-        if (r !== have.radius || infl !== have.influence) this.pg.resizeObstacle(k, r, infl);
-      });
-      for (const [key, v] of Object.entries(w.params ?? {})) {
-        if (typeof v === 'number' && key in s.params && s.params[key] !== v) this.pg.setParam(key, v);
-      }
-      for (const key of ['duration', 'dt']) {
-        if (typeof w[key] === 'number' && s[key] !== w[key]) this.pg.setParam(key, w[key]);
-      }
-    } catch {
-      // A value the core refuses once exact (it took it a hair away): the core's values stay.
+    w.robots.forEach((r, i) => {
+      const have = s.robots[i];
+      if (pose(r.start, 3) && differs(r.start, have.start))
+        edits.push(() => pg.moveRobot(i, r.start[0], r.start[1], r.start[2]));
+      if (pose(r.goal, 3) && differs(r.goal, have.goal))
+        edits.push(() => pg.moveGoal(i, r.goal[0], r.goal[1], r.goal[2]));
+    });
+    (Array.isArray(w.obstacles) ? w.obstacles : []).forEach((o, k) => {
+      const have = s.obstacles[k];
+      if (!have) return;
+      if (pose(o.center, 2) && differs(o.center, have.center))
+        edits.push(() => pg.moveObstacle(k, o.center[0], o.center[1]));
+      const r = typeof o.radius === 'number' ? o.radius : have.radius;
+      const infl = typeof o.influence === 'number' ? o.influence : have.influence;
+      if (r !== have.radius || infl !== have.influence) edits.push(() => pg.resizeObstacle(k, r, infl));
+    });
+    for (const [key, v] of Object.entries(w.params ?? {})) {
+      if (typeof v === 'number' && key in s.params && s.params[key] !== v) edits.push(() => pg.setParam(key, v));
     }
+    for (const key of ['duration', 'dt']) {
+      if (typeof w[key] === 'number' && s[key] !== w[key]) edits.push(() => pg.setParam(key, w[key]));
+    }
+    return edits;
   }
 
   /** The current scenario as a plain object (a copy), or null before the first scene. */
   scenario() {
+    this.flushExact();
     return this.pg ? structuredClone(this.model) : null;
+  }
+
+  /** Offers the scenario as a JSON file (io.js); a message says why when it cannot be written. */
+  async exportJson() {
+    if (!this.pg) return;
+    try {
+      await downloadScenarioJson(this.model);
+    } catch (e) {
+      this.showMessage(`Scenario JSON: ${messageOf(e)}`);
+    }
   }
 
   /** The scenario's JSON text: what undo keeps. */
   text() {
+    this.flushExact();
     return JSON.stringify(this.model);
   }
 
@@ -288,6 +393,7 @@ export class Controller {
 
   play() {
     if (!this.pg) return;
+    this.flushExact();
     if (this.atEnd()) this.reset();
     this.loop.play();
     this.toolbar.update();
@@ -317,6 +423,7 @@ export class Controller {
 
   /** Back to t = 0 for a seek (which goes on from there). */
   rewind() {
+    this.flushExact();
     this.pg.reset();
     this.#changed();
   }
@@ -324,6 +431,7 @@ export class Controller {
   /** Goes to time `t` (s) of the run, in slices (FrameLoop.seekTo); the scrubber, the plots. */
   seekTo(t) {
     if (!this.pg || !Number.isFinite(t)) return;
+    this.flushExact();
     this.loop.seekTo(t);
     this.toolbar.update();
   }
@@ -354,6 +462,7 @@ export class Controller {
   /** Advances `n` steps of dt and pauses; returns the steps taken. Throws for a bad `n`. */
   step(n = 1) {
     if (!this.pg) return 0;
+    this.flushExact();
     this.pause();
     this.loop.seekStep = null;
     const taken = this.pg.step(n);
@@ -372,6 +481,7 @@ export class Controller {
     if (typeof t !== 'number' || Number.isNaN(t))
       throw new Error(`seek: the time must be a number of seconds, not ${t}`);
     if (!this.pg) return 0;
+    this.flushExact();
     this.pause();
     // Synchronous: a seek in slices under way (the scrubber's, FrameLoop.seekTo) ends here.
     this.loop.seekStep = null;
@@ -398,6 +508,7 @@ export class Controller {
 
   /** Advances `n` steps for the frame loop (which keeps playing); returns the steps taken. */
   advance(n) {
+    this.flushExact();
     const taken = this.pg.step(n);
     this.views.refresh();
     if (taken > 0) this.#clockMoved();
@@ -523,6 +634,7 @@ export class Controller {
 
   /** Starts a gesture (a drag, a key, a button); one begun within another joins it. */
   begin() {
+    this.flushExact();
     this.history.begin();
   }
 

@@ -8,6 +8,7 @@ import { fitCanvas } from '../render/canvas.js';
 import { drawScene } from '../render/scene.js';
 import { drawGhost } from './ghost.js';
 import { SpriteLayer } from '../render/sprites.js';
+import { SvgContext } from '../render/svg.js';
 import { FIELD_SPACING_PX, setPalette } from '../render/theme.js';
 import { TRAIL_SETTLE_MS, TrailLayer } from '../render/trails.js';
 import { messageOf } from './message.js';
@@ -31,6 +32,11 @@ function stamp(ctx, title, clock) {
   ctx.fillStyle = '#111827';
   ctx.fillText(text, 12, 10);
   ctx.restore();
+}
+
+/** The clock of frame `scene`: its time and the run's duration. */
+function clockText(scene) {
+  return `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s`;
 }
 
 export class Painter {
@@ -71,23 +77,7 @@ export class Painter {
       ? fitCanvas(target.canvas, target.dpr, [c.canvas.clientWidth, c.canvas.clientHeight])
       : fitCanvas(c.canvas);
     const view = c.view();
-    const fieldLength = c.fieldMode === 'arrows' ? this.sampleField(view, width, height) : 0;
-    const curves = c.fieldMode === 'curves' ? this.integralCurves() : null;
-    // After every other call into wasm this frame (a view is valid until the memory grows).
-    /** @type {import('../render/scene.js').Scene} */
-    const scene = {
-      ...c.views.read(),
-      scenario: c.model,
-      selection: c.selection,
-      focusRobot: c.focusRobot,
-      showSensing: c.showSensing,
-      field: fieldLength ? c.views.field(fieldLength) : null,
-      curves,
-      curvePoints: c.limits.curvePoints,
-      trailLayer: this.trailLayer,
-      spriteLayer: this.spriteLayer,
-      dpr: ctx.canvas.width / width,
-    };
+    const scene = this.scene(view, width, height, ctx.canvas.width / width);
     this.trailLayer.update(view, scene, scene.dpr, c.generation, performance.now());
     if (this.trailLayer.stale && !this.settleTimer) {
       // The trails are shown stretched while the view moves: draw them anew once it rests.
@@ -109,7 +99,7 @@ export class Painter {
         : loop.convergedAt != null
           ? ' (stopped: every robot at its goal)'
           : ' (paused)';
-    const clock = `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s`;
+    const clock = clockText(scene);
     if (target || c.recorder.active) stamp(ctx, c.model.name, clock);
     if (target) return;
     c.$('clock').textContent = `${clock}${state}`;
@@ -122,6 +112,49 @@ export class Painter {
       showInspected(c.$('robot-info'), c.focusRobot, c.model.robots.length, scene.status);
       c.selectionPanel.update();
     }
+  }
+
+  /**
+   * What a frame of `view` (`width × height` CSS px at density `dpr`) draws (render/scene.js),
+   * read after every other call into wasm of the frame (a view of wasm memory is valid until
+   * the memory grows).
+   * @returns {import('../render/scene.js').Scene}
+   */
+  scene(view, width, height, dpr) {
+    const c = this.c;
+    const fieldLength = c.fieldMode === 'arrows' ? this.sampleField(view, width, height) : 0;
+    const curves = c.fieldMode === 'curves' ? this.integralCurves() : null;
+    return {
+      ...c.views.read(),
+      scenario: c.model,
+      selection: c.selection,
+      focusRobot: c.focusRobot,
+      showSensing: c.showSensing,
+      field: fieldLength ? c.views.field(fieldLength) : null,
+      curves,
+      curvePoints: c.limits.curvePoints,
+      trailLayer: this.trailLayer,
+      spriteLayer: this.spriteLayer,
+      dpr,
+    };
+  }
+
+  /**
+   * The frame as an SVG document (render/svg.js): what the canvas shows, as vectors (trails,
+   * predicted paths, obstacles, robots, grid and labels), the title and the time stamped in.
+   */
+  svg() {
+    const c = this.c;
+    setPalette(c.palette);
+    const width = c.canvas.clientWidth;
+    const height = c.canvas.clientHeight;
+    const ctx = new SvgContext(width, height);
+    const view = c.view();
+    const scene = { ...this.scene(view, width, height, 1), vector: true };
+    const g = /** @type {any} */ (ctx);
+    drawScene(g, view, scene, c.ghost ? () => drawGhost(g, view, c.ghost) : null);
+    stamp(g, c.model.name, clockText(scene));
+    return ctx.toString();
   }
 
   hintText() {

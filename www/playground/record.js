@@ -1,5 +1,5 @@
 // Recording what the canvas shows: a PNG at 1×, 2× or 4× the CSS size (drawn anew at that
-// density, not scaled up), and a WebM video through the browser's own MediaRecorder, both with
+// density, not scaled up), an SVG of the same picture as vectors (render/svg.js), and a WebM video through the browser's own MediaRecorder, both with
 // the scenario's title and the time stamped in (the page's clock and title are HTML over the
 // canvas, not in it).
 
@@ -22,6 +22,18 @@ export function exportPng(c, scale) {
     else c.showMessage('PNG: the browser could not encode the picture');
   }, 'image/png');
   c.requestDraw();
+}
+
+/** Offers the picture of controller `c` as an SVG file (Painter.svg: the canvas as vectors). */
+export function exportSvg(c) {
+  let text = '';
+  try {
+    text = c.painter.svg();
+  } catch (e) {
+    c.showMessage(`SVG: ${messageOf(e)}`);
+    return;
+  }
+  downloadBlob(new Blob([text], { type: 'image/svg+xml' }), `${fileStem(c.model.name)}.svg`);
 }
 
 /** A WebM recording of one playground's canvas. */

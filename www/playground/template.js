@@ -38,6 +38,7 @@ export const TEMPLATE = `
       <button type="button" data-id="export-json" title="Download the scenario as JSON">Scenario JSON</button>
       <button type="button" data-id="export-png" title="Download the picture as PNG, the title and the time stamped in">PNG</button>
       <select data-id="png-scale" aria-label="PNG size: times the canvas's size"><option value="1">1×</option><option value="2" selected>2×</option><option value="4">4×</option></select>
+      <button type="button" data-id="export-svg" title="Download the picture as SVG (vectors: trails, paths, obstacles, robots, axes), for papers">SVG</button>
       <button type="button" data-id="record" aria-pressed="false" title="Record the canvas as a WebM video (again: stop and download)">Record</button>
       <button type="button" data-id="export-csv" title="Download the whole run's trajectories as CSV">CSV</button>
       <button type="button" data-id="import" title="Load a scenario JSON file">Import…</button>

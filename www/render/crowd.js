@@ -14,12 +14,17 @@ const CROWD_GLYPH_MIN_PX = 4;
  * A crowd's safe discs are drawn only when at least this wide (radius, CSS px) and at most
  * CROWD_DISC_MAX robots are on screen (each disc is a path call: see sprites.js).
  */
-const CROWD_DISC_MIN_PX = 3;
+export const CROWD_DISC_MIN_PX = 3;
 const CROWD_DISC_MAX = 1500;
+
+/** A crowd's glyphs as a multiple of a robot's (CSS px: what crowdGlyphPx rounds). */
+export function crowdGlyphScale(view, safeRadius) {
+  return Math.min(ROBOT_LENGTH_PX, Math.max(CROWD_GLYPH_MIN_PX, 3 * safeRadius * view.scale)) / ROBOT_LENGTH_PX;
+}
 
 /** Length of a crowd's glyphs in device pixels (a whole number, so sprites can be reused). */
 function crowdGlyphPx(view, safeRadius, dpr) {
-  const css = Math.min(ROBOT_LENGTH_PX, Math.max(CROWD_GLYPH_MIN_PX, 3 * safeRadius * view.scale));
+  const css = crowdGlyphScale(view, safeRadius) * ROBOT_LENGTH_PX;
   return Math.max(3, Math.round(css * dpr));
 }
 

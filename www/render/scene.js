@@ -3,7 +3,7 @@
 // nothing of the DOM beyond the canvas it is given (and the canvases of its layers).
 
 import { POSE_STRIDE, STATUS, STATUS_STRIDE } from '../playground/wasm-views.js';
-import { drawCrowd } from './crowd.js';
+import { CROWD_DISC_MIN_PX, crowdGlyphScale, drawCrowd } from './crowd.js';
 import { drawCurves, drawField } from './field.js';
 import {
   addCircle,
@@ -27,7 +27,11 @@ import {
   CROWD_STYLE_ABOVE,
   FOCUS_HALO,
   hairline,
+  LABEL_COLOUR,
   MARKER_SCALE,
+  NUMBER_FONT,
+  NUMBERS_MAX,
+  NUMBERS_MIN_DISC_PX,
   PREDICTED_ALPHA,
   PREDICTED_DASH_PX,
   PREDICTED_WIDTH_PX,
@@ -50,6 +54,7 @@ import {
  *   trailLayer: import('./trails.js').TrailLayer,
  *   spriteLayer: import('./sprites.js').SpriteLayer,
  *   dpr: number,
+ *   vector?: boolean,
  * }} Scene
  */
 
@@ -75,14 +80,48 @@ export function drawScene(ctx, view, scene, underlay = null) {
   if (scene.field) drawField(ctx, view, scene.field, s.obstacles, hairline(scene.dpr));
   const n = s.robots.length;
   drawPredicted(ctx, view, scene);
-  scene.trailLayer?.composite(ctx, view);
-  if (n > CROWD_STYLE_ABOVE) {
+  // A vector picture (render/svg.js) has no pixels: its trails and crowd are paths.
+  if (scene.vector) scene.trailLayer?.draw(ctx, view, scene, 0, n > CROWD_STYLE_ABOVE);
+  else scene.trailLayer?.composite(ctx, view);
+  if (n > CROWD_STYLE_ABOVE && !scene.vector) {
     drawCrowd(ctx, view, scene);
   } else {
     drawRobots(ctx, view, scene);
   }
+  drawNumbers(ctx, view, scene);
   drawSelection(ctx, view, scene);
   drawLabels(ctx, view);
+}
+
+/**
+ * Each robot's number (from 1, as the panels and the messages count), once the view is zoomed
+ * in far enough that the numbers do not cover each other: a safe disc at least
+ * NUMBERS_MIN_DISC_PX wide on screen and at most NUMBERS_MAX robots on screen. Each number
+ * sits at its robot's upper right, in the label colour over a halo of the background.
+ */
+function drawNumbers(ctx, view, scene) {
+  const s = scene.scenario;
+  const n = s.robots.length;
+  if (s.params.safe_radius * view.scale * 2 < NUMBERS_MIN_DISC_PX) return;
+  const p = scene.poses;
+  const at = [];
+  for (let i = 0; i < n; i++) {
+    const x = view.sx(p[i * POSE_STRIDE]);
+    const y = view.sy(p[i * POSE_STRIDE + 1]);
+    if (x < 0 || y < 0 || x > view.width || y > view.height) continue;
+    if (at.length === NUMBERS_MAX) return;
+    at.push(i, x, y);
+  }
+  const off = ROBOT_LENGTH_PX * 0.55;
+  ctx.font = NUMBER_FONT;
+  ctx.textAlign = 'left';
+  ctx.textBaseline = 'bottom';
+  ctx.lineJoin = 'round';
+  ctx.lineWidth = 3;
+  ctx.strokeStyle = BOUNDS_FILL;
+  for (let k = 0; k < at.length; k += 3) ctx.strokeText(String(at[k] + 1), at[k + 1] + off, at[k + 2] - off);
+  ctx.fillStyle = LABEL_COLOUR;
+  for (let k = 0; k < at.length; k += 3) ctx.fillText(String(at[k] + 1), at[k + 1] + off, at[k + 2] - off);
 }
 
 /**
@@ -90,24 +129,34 @@ export function drawScene(ctx, view, scene, underlay = null) {
  * colour (each kind of glyph of the robots of one colour is one path, filled or stroked once):
  * without a GPU every fill or stroke costs tens of microseconds to rasterise, whatever its
  * size, so a hundred robots drawn one by one cost over 20 ms a frame. A dash pattern starts
- * afresh on each glyph of a path, so the picture is the same.
+ * afresh on each glyph of a path, so the picture is the same. A crowd comes here only to be
+ * drawn as vectors (render/svg.js).
  */
 function drawRobots(ctx, view, scene) {
   const s = scene.scenario;
   const n = s.robots.length;
   const k = ROBOT_COLOURS.length;
   const p = scene.poses;
+  // A crowd drawn as vectors (drawScene) keeps what its canvas shows (render/crowd.js): goals
+  // and bodies on screen, and safe discs only when wide enough to see.
+  const crowd = n > CROWD_STYLE_ABOVE;
+  const pad = ROBOT_LENGTH_PX;
+  const onScreen = (x, y) => x > -pad && y > -pad && x < view.width + pad && y < view.height + pad;
   const each = (c, add) => {
     ctx.beginPath();
     for (let i = c; i < n; i += k) add(i);
   };
+  const glyph = crowd ? crowdGlyphScale(view, s.params.safe_radius) : 1;
+  const addTriangleAt = (x, y, theta, size) => {
+    if (!crowd || onScreen(x, y)) addTriangle(ctx, x, y, theta, size * glyph);
+  };
   for (let c = 0; c < k && c < n; c++) {
     each(c, (i) => {
       const g = s.robots[i].goal;
-      addTriangle(ctx, view.sx(g[0]), view.sy(g[1]), g[2], MARKER_SCALE);
+      addTriangleAt(view.sx(g[0]), view.sy(g[1]), g[2], MARKER_SCALE);
     });
     paintGoals(ctx, ROBOT_COLOURS[c]);
-    if (scene.time !== 0) {
+    if (scene.time !== 0 && !crowd) {
       each(c, (i) => {
         const st = s.robots[i].start;
         addTriangle(ctx, view.sx(st[0]), view.sy(st[1]), st[2], MARKER_SCALE);
@@ -115,24 +164,28 @@ function drawRobots(ctx, view, scene) {
       paintStarts(ctx, ROBOT_COLOURS[c]);
     }
   }
-  if (scene.showSensing) {
+  if (scene.showSensing && !crowd) {
     const r = s.params.sense_radius * view.scale;
     ctx.beginPath();
     for (let i = 0; i < n; i++) addCircle(ctx, view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), r);
     paintSenseCircles(ctx);
   }
-  if (!s.independent) {
+  if (!s.independent && !(crowd && s.params.safe_radius * view.scale < CROWD_DISC_MIN_PX)) {
     const r = s.params.safe_radius * view.scale;
     for (let c = 0; c < k && c < n; c++) {
-      each(c, (i) => addCircle(ctx, view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), r));
+      each(c, (i) => {
+        const x = view.sx(p[i * POSE_STRIDE]);
+        const y = view.sy(p[i * POSE_STRIDE + 1]);
+        if (!crowd || onScreen(x, y)) addCircle(ctx, x, y, r);
+      });
       paintSafeDiscs(ctx, ROBOT_COLOURS[c]);
     }
-    drawVirtualObstaclesOf(ctx, view, scene);
+    if (!crowd) drawVirtualObstaclesOf(ctx, view, scene);
   }
   ctx.lineJoin = 'miter';
   for (let c = 0; c < k && c < n; c++) {
     each(c, (i) =>
-      addTriangle(ctx, view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), p[i * POSE_STRIDE + 2], 1),
+      addTriangleAt(view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), p[i * POSE_STRIDE + 2], 1),
     );
     paintBodies(ctx, ROBOT_COLOURS[c]);
   }
@@ -183,14 +236,18 @@ function drawPredicted(ctx, view, scene) {
 function drawVirtualObstaclesOf(ctx, view, scene) {
   const st = scene.status;
   const rc = scene.scenario.params.avoid_radius * view.scale;
-  // Two robots avoiding each other share one virtual obstacle: draw each place once.
+  // Two robots avoiding each other share one virtual obstacle: draw each place (to the
+  // nearest pixel) once.
   const drawn = [];
-  const seen = (x, y) => drawn.some(([a, b]) => Math.abs(a - x) < 0.5 && Math.abs(b - y) < 0.5);
+  const seen = new Set();
   for (let k = 0; k < st.length; k += STATUS_STRIDE) {
     if (Number.isNaN(st[k + STATUS.virtualX])) continue;
     const x = view.sx(st[k + STATUS.virtualX]);
     const y = view.sy(st[k + STATUS.virtualY]);
-    if (!seen(x, y)) drawn.push([x, y]);
+    const key = `${Math.round(x)},${Math.round(y)}`;
+    if (seen.has(key)) continue;
+    seen.add(key);
+    drawn.push([x, y]);
   }
   if (drawn.length) drawVirtualObstacles(ctx, drawn, rc);
 }

@@ -37,6 +37,15 @@ export let GRID_COLOUR = '#e3e6ea';
 export let AXIS_COLOUR = '#c3c8cf';
 export let LABEL_COLOUR = '#6b7280';
 export const LABEL_FONT = '11px system-ui, sans-serif';
+/** The robots' numbers on the canvas (render/scene.js's drawNumbers). */
+export const NUMBER_FONT = '600 11px system-ui, sans-serif';
+/**
+ * Robots are numbered on the canvas once a safe disc is at least this wide on screen (CSS px:
+ * the numbers, about 7 px a digit, then fit between robots whose discs do not overlap) and at
+ * most NUMBERS_MAX robots are on screen.
+ */
+export const NUMBERS_MIN_DISC_PX = 24;
+export const NUMBERS_MAX = 150;
 export let OBSTACLE_FILL = '#4b5563';
 export let INFLUENCE_STROKE = '#9ca3af';
 export let INFLUENCE_FILL = 'rgba(156, 163, 175, 0.14)';
