@@ -269,10 +269,15 @@ export class Controller {
     return k;
   }
 
-  /** Applies the pending fix-ups (#exact) EXACT_SLICE_MS at a time, a task each. */
+  /**
+   * Applies the pending fix-ups (#exact) EXACT_SLICE_MS at a time, a task each, the first after
+   * the task that made the scene.
+   */
   async #applyExact() {
     const job = this.#exact;
     while (job && this.#exact === job) {
+      await new Promise((resolve) => setTimeout(resolve, 0));
+      if (this.#exact !== job) return;
       const end = performance.now() + EXACT_SLICE_MS;
       while (job.next < job.edits.length && performance.now() < end) {
         job.next = this.#runEdits(job.edits, job.next, job.next + 1);
@@ -281,7 +286,6 @@ export class Controller {
         this.#endExact();
         return;
       }
-      await new Promise((resolve) => setTimeout(resolve, 0));
     }
   }
 
