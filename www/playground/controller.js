@@ -375,6 +375,7 @@ export class Controller {
   /** Offers the scenario as a JSON file (io.js); a message says why when it cannot be written. */
   async exportJson() {
     if (!this.pg) return;
+    this.flushExact();
     try {
       await downloadScenarioJson(this.model);
     } catch (e) {
@@ -620,6 +621,7 @@ export class Controller {
    * succeeds: then, and only then, the caller updates the model.
    */
   #edit(scenario, call) {
+    this.flushExact();
     if (scenario) this.history.willChange(() => this.text());
     const t0 = performance.now();
     call();
