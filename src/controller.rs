@@ -132,6 +132,7 @@ pub fn command(
     let sensed = neighbours.iter().map(|&position| Neighbour {
         position,
         speed: 0.0,
+        slowest_near: None,
     });
     evaluate(params, pose, err, 0.0, obstacles, sensed).command
 }
@@ -350,6 +351,7 @@ mod tests {
         let n = Neighbour {
             position: DVec2::new(1.0, 0.0),
             speed: 2.0,
+            slowest_near: None,
         };
         let e = evaluate(&p, pose, pose.error_to(goal), 2.0, [], [n]);
         assert_eq!(e.robot_keep, 0.0);

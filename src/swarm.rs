@@ -24,6 +24,13 @@ pub struct Neighbour {
     pub position: DVec2,
     /// Its speed `|v_j|` (m/s).
     pub speed: f64,
+    /// The smallest speed of the robots within the avoidance range of this one (at another
+    /// position, the sensing robot included: it is never at rest next to itself): `+∞` for
+    /// none, `None` when the caller does not know it, and then [`cluster`] looks among the
+    /// sensing robot's other neighbours (`in_a_parked_formation`: the same answer whenever
+    /// they hold every robot within the range of this one). A simulation knows it, and its
+    /// lists then reach half as far ([`cluster_reach`]).
+    pub slowest_near: Option<f64>,
 }
 
 /// The virtual obstacle a robot avoids, and the distance that drives its transition `ς`.
@@ -150,14 +157,16 @@ pub fn cluster(
 /// robot from a goal that lies between parked neighbours (a slot in a crowded formation).
 pub const BLOCKING: f64 = 1.5;
 
-/// How far from the robot [`cluster`] looks: its `range`, and with [`Avoidance::Exit`] the
-/// range again around each neighbour within it (`in_a_parked_formation` looks for another
-/// parked robot near the neighbour). A sensed robot farther than this changes no cluster.
+/// How far from the robot [`cluster`] looks: its `range`, and with [`Avoidance::Exit`] when
+/// its neighbours' [`Neighbour::slowest_near`] is not known (`slowest_known` false) the range
+/// again around each neighbour within it (`in_a_parked_formation` then looks for another
+/// parked robot near the neighbour among the robot's own). A sensed robot farther than this
+/// changes no cluster.
 #[must_use]
-pub fn cluster_reach(range: f64, avoidance: Avoidance) -> f64 {
+pub fn cluster_reach(range: f64, avoidance: Avoidance, slowest_known: bool) -> f64 {
     match avoidance {
-        Avoidance::Paper => range,
-        Avoidance::Exit => 2.0 * range,
+        Avoidance::Exit if !slowest_known => 2.0 * range,
+        _ => range,
     }
 }
 
@@ -175,11 +184,14 @@ fn in_a_parked_formation(
     range: f64,
 ) -> bool {
     at_rest(me, n)
-        && sensed.into_iter().any(|m| {
-            m.position != n.position
-                && at_rest(me, m)
-                && m.position.distance_squared(n.position) <= range * range
-        })
+        && match n.slowest_near {
+            Some(slowest) => at_rest_at(me, slowest),
+            None => sensed.into_iter().any(|m| {
+                m.position != n.position
+                    && at_rest(me, m)
+                    && m.position.distance_squared(n.position) <= range * range
+            }),
+        }
 }
 
 /// How far a robot moving at `speed` leaves the avoidance of a neighbour moving at `other`
@@ -195,7 +207,12 @@ fn yields(speed: f64, other: f64) -> f64 {
 
 /// Whether `n` is at rest next to the robot `me` (see [`Cluster::at_rest`]).
 fn at_rest(me: Approach, n: Neighbour) -> bool {
-    n.speed + SPEED_FLOOR <= AT_REST_RATIO * (me.speed + SPEED_FLOOR)
+    at_rest_at(me, n.speed)
+}
+
+/// Whether a robot moving at `speed` is at rest next to the robot `me`.
+fn at_rest_at(me: Approach, speed: f64) -> bool {
+    speed + SPEED_FLOOR <= AT_REST_RATIO * (me.speed + SPEED_FLOOR)
 }
 
 /// How far a neighbour at rest stands aside of the straight way to the goal, as a transition
@@ -299,6 +316,7 @@ mod tests {
         Neighbour {
             position: DVec2::new(x, y),
             speed: 1.0,
+            slowest_near: None,
         }
     }
 
@@ -355,6 +373,7 @@ mod tests {
         let parked = |y: f64| Neighbour {
             position: DVec2::new(5.0, y),
             speed: 0.0,
+            slowest_near: None,
         };
         let safe = 2.0;
         let c = |y| cluster(me, [parked(y)], 8.0, safe, Avoidance::Exit).unwrap();
@@ -364,6 +383,7 @@ mod tests {
         assert!(cluster(me, [parked(3.0)], 8.0, safe, Avoidance::Exit).is_none()); // clear
         let moving = Neighbour {
             speed: 2.0,
+            slowest_near: None,
             ..parked(3.0)
         };
         assert_eq!(
@@ -398,6 +418,7 @@ mod tests {
         let parked = |x: f64, y: f64| Neighbour {
             position: DVec2::new(x, y),
             speed: 0.0,
+            slowest_near: None,
         };
         let c = |ns: &[Neighbour]| cluster(me, ns.iter().copied(), 8.0, 2.0, Avoidance::Exit);
         assert!(c(&[parked(4.0, 0.5)]).is_some());
@@ -406,6 +427,7 @@ mod tests {
         assert!(c(&[parked(4.0, 0.5), parked(4.0, 9.0)]).is_some());
         let moving = Neighbour {
             speed: 2.0,
+            slowest_near: None,
             ..parked(4.0, 0.5)
         };
         assert!(c(&[moving, parked(4.0, 5.5)]).is_some());
@@ -423,11 +445,13 @@ mod tests {
         let parked = Neighbour {
             position: DVec2::new(4.0, 0.0),
             speed: 0.0,
+            slowest_near: None,
         };
         let o = virtual_obstacle_between(p, 2.0, parked);
         assert_close!(o.x, 4.0 * 2.001 / 2.002, 1e-12);
         let alike = Neighbour {
             speed: 2.0,
+            slowest_near: None,
             ..parked
         };
         assert_eq!(

@@ -73,6 +73,7 @@ impl Live {
                         Neighbour {
                             position: o.pose.p,
                             speed: o.last.command.v.abs(),
+                            slowest_near: None,
                         }
                     }));
                 }

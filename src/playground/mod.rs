@@ -549,6 +549,7 @@ mod tests {
                     .map(|(_, o)| Neighbour {
                         position: o.pose.p,
                         speed: o.last.command.v.abs(),
+                        slowest_near: None,
                     })
                     .collect();
                 let e = evaluate(

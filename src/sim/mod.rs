@@ -35,7 +35,7 @@ pub use run::{run, run_recorded, run_with, Sample};
 use crate::controller::{evaluate, Evaluation};
 use crate::grid::{Neighbours, ObstacleCells};
 use crate::obstacle::Obstacle;
-use crate::params::Params;
+use crate::params::{Avoidance, Params};
 use crate::safety;
 use crate::scenario::Scenario;
 use crate::se2::{continue_branch, wrap_angle, Pose};
@@ -116,6 +116,12 @@ pub struct Simulation {
     positions: Vec<DVec2>,
     // `list_reach(&params)`, once: the parameters of a simulation never change.
     reach: f64,
+    // Whether the step finds each robot's slowest robots within the avoidance range
+    // (`find_slowest`), so that the lists need not reach twice that range (`slowest_known`).
+    slowest_known: bool,
+    // Per robot, the smallest speed of the robots within the avoidance range of it (at
+    // another position), +∞ for none; empty unless `slowest_known`.
+    slowest: Vec<f64>,
     scratch: Scratch,
     // The parallel step (native only): whether it is on, its buffers (one per chunk), and the
     // evaluations before they are stored.
@@ -148,6 +154,8 @@ impl Simulation {
             .map(|r| Robot::at(r.start_pose(), r.goal_pose()))
             .collect();
         let n = robots.len();
+        let slowest_known =
+            !s.independent && neighbourhood == Neighbourhood::Grid && slowest_known(&s.params);
         let mut sim = Self {
             name: s.name.clone(),
             params: s.params,
@@ -162,7 +170,9 @@ impl Simulation {
             obstacle_cells: ObstacleCells::default(),
             near: Neighbours::new(),
             positions: Vec::with_capacity(n),
-            reach: list_reach(&s.params),
+            reach: list_reach(&s.params, slowest_known),
+            slowest_known,
+            slowest: Vec::new(),
             scratch: Scratch::default(),
             #[cfg(not(target_arch = "wasm32"))]
             parallel: true,
@@ -272,7 +282,7 @@ impl Simulation {
     /// pair within the reach now was within the widened reach then. Readers test the distance
     /// (the evaluation, the metrics, `min_listed_pair_distance`), so they see exactly the pairs
     /// within the reach, in ascending index, whenever the lists were built. A crowd at 20 m/s
-    /// (reach 16 m, skin 4 m) rebuilds every tenth step.
+    /// (reach 10 m, skin 2.5 m) rebuilds about every sixth step.
     fn find_neighbours(&mut self) {
         if !self.listed() {
             return;
@@ -297,6 +307,34 @@ impl Simulation {
         }
     }
 
+    /// Each robot's slowest robot within the avoidance range of it (at another position), from
+    /// the lists and the snapshot's speeds, when the step knows it ([`slowest_known`]): a robot
+    /// deciding whether a neighbour stands in a parked formation reads it
+    /// ([`Neighbour::slowest_near`]) instead of searching its own neighbours around that one.
+    /// The same answer, since it would find the same robots: with `R_s` at least twice the
+    /// range, every robot within the range of a neighbour within the range is sensed. The
+    /// deciding robot itself may be the slowest, which changes nothing: it is never at rest
+    /// next to itself (`swarm::AT_REST_RATIO` < 1), nor is any robot at least as fast.
+    fn find_slowest(&mut self) {
+        if !self.slowest_known {
+            return;
+        }
+        let range = pair_range(self.params.avoid_radius, self.params.transition_width);
+        let range2 = range * range;
+        self.slowest.clear();
+        for (n, r) in self.robots.iter().enumerate() {
+            let p = r.pose.p;
+            let mut slowest = f64::INFINITY;
+            for &m in self.near.of(n) {
+                let q = self.robots[m as usize].pose.p;
+                if q != p && q.distance_squared(p) <= range2 {
+                    slowest = slowest.min(self.speeds[m as usize]);
+                }
+            }
+            self.slowest.push(slowest);
+        }
+    }
+
     /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
     fn evaluate_all(&mut self) {
         // Every robot sees the speeds of the same snapshot, whatever the loop order.
@@ -304,6 +342,7 @@ impl Simulation {
             *s = r.last.command.v.abs();
         }
         self.find_neighbours();
+        self.find_slowest();
         #[cfg(not(target_arch = "wasm32"))]
         if self.evaluate_in_parallel() {
             return;
@@ -352,6 +391,8 @@ impl Simulation {
                 neighbours.push(Neighbour {
                     position: other.pose.p,
                     speed: self.speeds[j],
+                    // Empty when the step does not know them (`find_slowest`).
+                    slowest_near: self.slowest.get(j).copied(),
                 });
             }
         };
@@ -542,6 +583,7 @@ impl Simulation {
             self.evaluate_robot(i);
         } else {
             self.find_neighbours();
+            self.find_slowest();
             let near = self.sense_margin();
             let affected = |q: DVec2| q.distance(was) <= near || q.distance(now) <= near;
             for j in 0..self.robots.len() {
@@ -628,18 +670,31 @@ impl Simulation {
     }
 }
 
+/// Whether a step can find each robot's slowest robots within the avoidance range
+/// ([`Simulation::find_slowest`]) and give its neighbours' to the robot that senses them: with
+/// the default avoidance (the paper's looks for no parked formation) and a sensing radius at
+/// least twice the range (so that a robot senses every robot its search would have found).
+fn slowest_known(p: &Params) -> bool {
+    let range = pair_range(p.avoid_radius, p.transition_width);
+    p.avoidance == Avoidance::Exit
+        && p.sense_radius
+            >= cluster_reach(range, p.avoidance, false) * (1.0 + safety::REACH_MARGIN)
+                + safety::REACH_MARGIN
+}
+
 /// The reach of the neighbour lists: the sensed robots that can change a command, and the
 /// collision distance `2·r_ij`. A sensed robot changes a command only within the reach of
 /// the virtual obstacle's choice ([`crate::swarm::cluster_reach`]: the avoidance range
-/// `2(R_c + ε)`, twice that where a parked formation is looked for) or within the barrier's
+/// `2(R_c + ε)`, twice that where a parked formation is looked for among the robot's own
+/// neighbours, not when `slowest_known`) or within the barrier's
 /// [`safety::neighbour_reach`] at the fastest speed `v_max` allows; beyond both, it is
 /// sensed and ignored, so the lists leave it out with the same bits. In a crowd with the
-/// default avoidance that is 16 m instead of `R_s` = 20 (10 m with the paper's). Without
-/// `v_max` and with a barrier, the sensing radius.
-fn list_reach(p: &Params) -> f64 {
+/// default avoidance that is the barrier's 10 m instead of `R_s` = 20. Without `v_max` and
+/// with a barrier, the sensing radius.
+fn list_reach(p: &Params, slowest_known: bool) -> f64 {
     let range = pair_range(p.avoid_radius, p.transition_width);
-    let avoidance =
-        cluster_reach(range, p.avoidance) * (1.0 + safety::REACH_MARGIN) + safety::REACH_MARGIN;
+    let avoidance = cluster_reach(range, p.avoidance, slowest_known) * (1.0 + safety::REACH_MARGIN)
+        + safety::REACH_MARGIN;
     let barrier = match (p.barrier_rate, p.v_max) {
         (None, _) => 0.0,
         (Some(_), Some(v)) => safety::neighbour_reach(p, v),
