@@ -31,8 +31,8 @@
 use crate::field::goal_field_body;
 use crate::obstacle::{blend, goal_first, transition, Obstacle};
 use crate::params::{Avoidance, Params};
-use crate::se2::{heading, rotate, unrotate_by, Pose};
-use crate::swarm::{cluster, pair_range, tangent_field, Approach, Neighbour};
+use crate::se2::{heading, rotate, unrotate, unrotate_by, Pose};
+use crate::swarm::{cluster, make_room, pair_range, tangent_field, Approach, Neighbour, ROOM};
 use glam::DVec2;
 
 /// Velocity inputs of a unicycle (eq. `eq_kine_nonho`).
@@ -157,6 +157,21 @@ where
     // The heading's sine and cosine, once for every rotation by θ below.
     let h = heading(theta);
     let eps = params.transition_width;
+    let neighbours = neighbours.into_iter();
+    // A robot at its goal (within r_ij, let go smoothly by 2·r_ij) makes room for the
+    // neighbours that press on it (`make_room`, Exit only): its goal moves by `room`, so that
+    // err.p = R(θ_d)ᵀ(p − p_d − room) with θ_d = θ − θ̃.
+    let err = if params.avoidance == Avoidance::Exit {
+        let r = params.safe_radius;
+        let at_goal = 1.0 - transition(err.p.length(), r, r);
+        let room = at_goal * make_room(pose.p, neighbours.clone(), 2.0 * r, ROOM * r);
+        Pose {
+            p: err.p - unrotate(theta - err.theta, room),
+            ..err
+        }
+    } else {
+        err
+    };
     let goal_body = goal_field_body(err);
     let goal_world = h.rotate(goal_body);
 

@@ -182,6 +182,36 @@ fn in_a_parked_formation(
         })
 }
 
+/// How far a robot at its goal steps aside for a neighbour that presses on it
+/// ([`make_room`]), in safe radii `r_ij`; it starts to when the neighbour is closer than
+/// `2·r_ij + ½·ROOM·r_ij`.
+pub const ROOM: f64 = 1.0;
+
+/// Where a robot at its goal moves its goal to make room for the neighbours that press on it:
+/// away from each neighbour closer than `safe + step/2`, by the transition ς of eq.
+/// `eq_switch_func` (1 at `safe`, 0 at `safe + step/2`), at most `step` in all. The robot
+/// steps aside while a neighbour presses on it and returns to its slot and heading once the
+/// neighbour has gone: slots closer together than a robot can pass between (`3·r_ij`: the gap
+/// between two safe discs is one `r_ij`) open up, the robot that presses is let through, and
+/// neighbours parked `safe + step/2` apart or more leave each other alone. Decentralised: the
+/// positions the robot senses are all it needs.
+#[must_use]
+pub fn make_room(
+    p_i: DVec2,
+    neighbours: impl IntoIterator<Item = Neighbour>,
+    safe: f64,
+    step: f64,
+) -> DVec2 {
+    let push: DVec2 = neighbours
+        .into_iter()
+        .map(|n| {
+            let away = (p_i - n.position).normalize_or_zero();
+            (1.0 - crate::obstacle::transition(p_i.distance(n.position), safe, 0.5 * step)) * away
+        })
+        .sum();
+    step * push.clamp_length_max(1.0)
+}
+
 /// How far a robot moving at `speed` leaves the avoidance of a neighbour moving at `other`
 /// to that neighbour ([`Cluster::yields`]): 1 when its share of the gap is 0, falling
 /// smoothly to 0 at the share of a robot [`AT_REST_RATIO`] as fast as the neighbour, so
@@ -414,6 +444,23 @@ mod tests {
         assert_eq!(yields(2.0, 2.0), 0.0);
         assert_eq!(yields(0.0, 0.0), 0.0);
         assert_eq!(yields(0.3, 2.0), 0.0);
+    }
+
+    /// A robot steps away from a neighbour that presses on it, by at most the step in all,
+    /// and leaves alone the neighbours `safe + step/2` away or more.
+    #[test]
+    fn a_robot_makes_room_for_a_neighbour_that_presses_on_it() {
+        let (safe, step) = (2.0, 1.0);
+        let room = |ns: &[Neighbour]| make_room(DVec2::ZERO, ns.iter().copied(), safe, step);
+        assert_eq!(room(&[at(-2.0, 0.0)]), DVec2::new(1.0, 0.0));
+        assert_eq!(room(&[at(0.0, 2.5)]), DVec2::ZERO);
+        assert_eq!(room(&[at(3.0, 0.0), at(0.0, -9.0)]), DVec2::ZERO);
+        let between = room(&[at(2.25, 0.0)]);
+        assert!(between.x < 0.0 && between.x > -1.0 && between.y == 0.0);
+        // Pressed from two sides at once: still at most one step.
+        let both = room(&[at(-2.0, 0.0), at(0.0, -2.0)]);
+        assert_close!(both.length(), 1.0, 1e-15);
+        assert_close!(both.x, both.y, 1e-15);
     }
 
     /// A neighbour at rest is circled about itself, one moving alike about the midpoint.
