@@ -204,12 +204,18 @@ where
             let s = transition(c.distance, params.avoid_radius, eps);
             // Let go of a neighbour whose safe disc is farther than the goal (Exit only).
             let go = c.clearance.map_or(0.0, |cl| goal_first(cl, to_goal, eps));
-            // A robot at rest on its goal (within r_ij, let go smoothly by 2·r_ij) leaves the
-            // avoidance of a moving neighbour to that neighbour (`Cluster::yields`): the point
-            // they would circle lies on itself, and circling it makes the parked robot's ω
-            // jump by the tangent's whole angle while its vanishing goal field is outweighed.
-            let parked = 1.0 - transition(to_goal, params.safe_radius, params.safe_radius);
-            let go = 1.0 - (1.0 - go) * (1.0 - c.aside) * (1.0 - c.yields * parked);
+            // A robot at its goal (within ½·r_ij, let go smoothly by r_ij) circles no
+            // neighbour (Exit only): it leaves the avoidance to the neighbour, the barrier and
+            // `make_room`.
+            // Circling a point next to its slot with a vanishing goal field makes its ω jump
+            // by the tangent's whole angle whenever the cluster changes, and robots at their
+            // goals in a tight grid then turn one way and the other from step to step.
+            let half = 0.5 * params.safe_radius;
+            let arrived = match params.avoidance {
+                Avoidance::Exit => 1.0 - transition(to_goal, half, half),
+                Avoidance::Paper => 0.0,
+            };
+            let go = 1.0 - (1.0 - go) * (1.0 - c.aside) * (1.0 - arrived);
             let side = c.at_rest.then_some(gp);
             (c.center, 1.0 - (1.0 - s) * (1.0 - go), side)
         })

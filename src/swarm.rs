@@ -45,12 +45,6 @@ pub struct Cluster {
     /// tenth as fast), so the robot goes round it on the side of its own field, as round an
     /// obstacle, rather than by the turn-left rule meant for two robots that both give way.
     pub at_rest: bool,
-    /// [`Avoidance::Exit`]: how far the robot leaves the avoidance to the neighbour (0: it
-    /// takes its part, 1: none), from its share of the gap `w_i/(w_i + w_j)`
-    /// ([`virtual_obstacle_between`]): a robot at rest next to one that moves has no part in
-    /// circling the point they share, which lies on itself, and the controller lets the
-    /// neighbour go by as much. 0 for the paper.
-    pub yields: f64,
 }
 
 /// A neighbour moving at most this fraction of the robot's speed is at rest for
@@ -104,12 +98,11 @@ pub fn cluster(
     let all = neighbours.into_iter();
     let sensed = all.clone();
     let in_range = all.filter(move |n| n.position.distance(p_i) <= range);
-    let (center, clearance, at_rest, aside, yields) = match avoidance {
+    let (center, clearance, at_rest, aside) = match avoidance {
         Avoidance::Paper => (
             virtual_obstacle(p_i, in_range.map(|n| n.position))?,
             None,
             false,
-            0.0,
             0.0,
         ),
         Avoidance::Exit => {
@@ -131,7 +124,6 @@ pub fn cluster(
                 Some(nearest.position.distance(p_i) - safe),
                 self::at_rest(me, nearest),
                 self::aside(me, nearest, safe),
-                self::yields(me.speed, nearest.speed),
             )
         }
     };
@@ -141,7 +133,6 @@ pub fn cluster(
         clearance,
         at_rest,
         aside,
-        yields,
     })
 }
 
@@ -210,17 +201,6 @@ pub fn make_room(
         })
         .sum();
     step * push.clamp_length_max(1.0)
-}
-
-/// How far a robot moving at `speed` leaves the avoidance of a neighbour moving at `other`
-/// to that neighbour ([`Cluster::yields`]): 1 when its share of the gap is 0, falling
-/// smoothly to 0 at the share of a robot [`AT_REST_RATIO`] as fast as the neighbour, so
-/// that robots that both move keep the paper's avoidance.
-fn yields(speed: f64, other: f64) -> f64 {
-    let w_i = speed.abs() + SPEED_FLOOR;
-    let w_j = other.abs() + SPEED_FLOOR;
-    let share = w_i / (w_i + w_j);
-    1.0 - crate::obstacle::transition(share, 0.0, AT_REST_RATIO / (1.0 + AT_REST_RATIO))
 }
 
 /// Whether `n` is at rest next to the robot `me` (see [`Cluster::at_rest`]).
@@ -421,9 +401,9 @@ mod tests {
 
     /// A parked neighbour in the way is circled when it stands alone and passed when another
     /// parked robot stands within the range of it (a parked formation); a moving one is always
-    /// circled. A robot at rest leaves a moving neighbour to it; robots moving alike do not.
+    /// circled.
     #[test]
-    fn parked_formations_are_passed_and_parked_robots_yield() {
+    fn parked_formations_are_passed() {
         let me = eastbound();
         let parked = |x: f64, y: f64| Neighbour {
             position: DVec2::new(x, y),
@@ -439,11 +419,6 @@ mod tests {
             ..parked(4.0, 0.5)
         };
         assert!(c(&[moving, parked(4.0, 5.5)]).is_some());
-        // Yielding: 1 at rest next to a moving robot (up to the speed floor), 0 alike.
-        assert!(yields(0.0, 2.0) > 0.999);
-        assert_eq!(yields(2.0, 2.0), 0.0);
-        assert_eq!(yields(0.0, 0.0), 0.0);
-        assert_eq!(yields(0.3, 2.0), 0.0);
     }
 
     /// A robot steps away from a neighbour that presses on it, by at most the step in all,
