@@ -25,8 +25,10 @@
 //! With `"avoidance": "exit"` (the default) an obstacle or neighbour farther than the goal is
 //! let go: `ς` is raised to `1 − (1 − ς)(1 − g)` with `g` from
 //! [`crate::obstacle::goal_first`] (and, for a neighbour at rest, by how far it stands aside of
-//! the way); see [`crate::obstacle::blend`] and [`crate::swarm::cluster`]. The speed is then
-//! made safe by [`crate::safety::filter`] in the simulator.
+//! the way); see [`crate::obstacle::blend`] and [`crate::swarm::cluster`]. A robot at its goal
+//! lets go of every neighbour and moves its goal aside for those that press on it
+//! ([`crate::swarm::make_room`]). The speed is then made safe by [`crate::safety::filter`] in
+//! the simulator.
 
 use crate::field::goal_field_body;
 use crate::obstacle::{blend, goal_first, transition, Obstacle};
