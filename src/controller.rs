@@ -25,14 +25,16 @@
 //! With `"avoidance": "exit"` (the default) an obstacle or neighbour farther than the goal is
 //! let go: `ς` is raised to `1 − (1 − ς)(1 − g)` with `g` from
 //! [`crate::obstacle::goal_first`] (and, for a neighbour at rest, by how far it stands aside of
-//! the way); see [`crate::obstacle::blend`] and [`crate::swarm::cluster`]. The speed is then
-//! made safe by [`crate::safety::filter`] in the simulator.
+//! the way); see [`crate::obstacle::blend`] and [`crate::swarm::cluster`]. A robot at its goal
+//! lets go of every neighbour and moves its goal aside for those that press on it
+//! ([`crate::swarm::make_room`]). The speed is then made safe by [`crate::safety::filter`] in
+//! the simulator.
 
 use crate::field::goal_field_body;
 use crate::obstacle::{blend, goal_first, transition, Obstacle};
 use crate::params::{Avoidance, Params};
-use crate::se2::{heading, rotate, unrotate_by, Pose};
-use crate::swarm::{cluster, pair_range, tangent_field, Approach, Neighbour};
+use crate::se2::{heading, rotate, unrotate, unrotate_by, Pose};
+use crate::swarm::{cluster, make_room, pair_range, tangent_field, Approach, Neighbour, ROOM};
 use glam::DVec2;
 
 /// Velocity inputs of a unicycle (eq. `eq_kine_nonho`).
@@ -158,6 +160,21 @@ where
     // The heading's sine and cosine, once for every rotation by θ below.
     let h = heading(theta);
     let eps = params.transition_width;
+    let neighbours = neighbours.into_iter();
+    // A robot at its goal (within r_ij, let go smoothly by 2·r_ij) makes room for the
+    // neighbours that press on it (`make_room`, Exit only): its goal moves by `room`, so that
+    // err.p = R(θ_d)ᵀ(p − p_d − room) with θ_d = θ − θ̃.
+    let err = if params.avoidance == Avoidance::Exit {
+        let r = params.safe_radius;
+        let at_goal = 1.0 - transition(err.p.length(), r, r);
+        let room = at_goal * make_room(pose.p, neighbours.clone(), 2.0 * r, ROOM * r);
+        Pose {
+            p: err.p - unrotate(theta - err.theta, room),
+            ..err
+        }
+    } else {
+        err
+    };
     let goal_body = goal_field_body(err);
     let goal_world = h.rotate(goal_body);
 
@@ -190,12 +207,18 @@ where
             let s = transition(c.distance, params.avoid_radius, eps);
             // Let go of a neighbour whose safe disc is farther than the goal (Exit only).
             let go = c.clearance.map_or(0.0, |cl| goal_first(cl, to_goal, eps));
-            // A robot at rest on its goal (within r_ij, let go smoothly by 2·r_ij) leaves the
-            // avoidance of a moving neighbour to that neighbour (`Cluster::yields`): the point
-            // they would circle lies on itself, and circling it makes the parked robot's ω
-            // jump by the tangent's whole angle while its vanishing goal field is outweighed.
-            let parked = 1.0 - transition(to_goal, params.safe_radius, params.safe_radius);
-            let go = 1.0 - (1.0 - go) * (1.0 - c.aside) * (1.0 - c.yields * parked);
+            // A robot at its goal (within ½·r_ij, let go smoothly by r_ij) circles no
+            // neighbour (Exit only): it leaves the avoidance to the neighbour, the barrier and
+            // `make_room`.
+            // Circling a point next to its slot with a vanishing goal field makes its ω jump
+            // by the tangent's whole angle whenever the cluster changes, and robots at their
+            // goals in a tight grid then turn one way and the other from step to step.
+            let half = 0.5 * params.safe_radius;
+            let arrived = match params.avoidance {
+                Avoidance::Exit => 1.0 - transition(to_goal, half, half),
+                Avoidance::Paper => 0.0,
+            };
+            let go = 1.0 - (1.0 - go) * (1.0 - c.aside) * (1.0 - arrived);
             let side = c.at_rest.then_some(gp);
             (c.center, 1.0 - (1.0 - s) * (1.0 - go), side)
         })

@@ -52,12 +52,6 @@ pub struct Cluster {
     /// tenth as fast), so the robot goes round it on the side of its own field, as round an
     /// obstacle, rather than by the turn-left rule meant for two robots that both give way.
     pub at_rest: bool,
-    /// [`Avoidance::Exit`]: how far the robot leaves the avoidance to the neighbour (0: it
-    /// takes its part, 1: none), from its share of the gap `w_i/(w_i + w_j)`
-    /// ([`virtual_obstacle_between`]): a robot at rest next to one that moves has no part in
-    /// circling the point they share, which lies on itself, and the controller lets the
-    /// neighbour go by as much. 0 for the paper.
-    pub yields: f64,
 }
 
 /// A neighbour moving at most this fraction of the robot's speed is at rest for
@@ -111,12 +105,11 @@ pub fn cluster(
     let all = neighbours.into_iter();
     let sensed = all.clone();
     let in_range = all.filter(move |n| n.position.distance(p_i) <= range);
-    let (center, clearance, at_rest, aside, yields) = match avoidance {
+    let (center, clearance, at_rest, aside) = match avoidance {
         Avoidance::Paper => (
             virtual_obstacle(p_i, in_range.map(|n| n.position))?,
             None,
             false,
-            0.0,
             0.0,
         ),
         Avoidance::Exit => {
@@ -138,7 +131,6 @@ pub fn cluster(
                 Some(nearest.position.distance(p_i) - safe),
                 self::at_rest(me, nearest),
                 self::aside(me, nearest, safe),
-                self::yields(me.speed, nearest.speed),
             )
         }
     };
@@ -148,7 +140,6 @@ pub fn cluster(
         clearance,
         at_rest,
         aside,
-        yields,
     })
 }
 
@@ -194,15 +185,34 @@ fn in_a_parked_formation(
         }
 }
 
-/// How far a robot moving at `speed` leaves the avoidance of a neighbour moving at `other`
-/// to that neighbour ([`Cluster::yields`]): 1 when its share of the gap is 0, falling
-/// smoothly to 0 at the share of a robot [`AT_REST_RATIO`] as fast as the neighbour, so
-/// that robots that both move keep the paper's avoidance.
-fn yields(speed: f64, other: f64) -> f64 {
-    let w_i = speed.abs() + SPEED_FLOOR;
-    let w_j = other.abs() + SPEED_FLOOR;
-    let share = w_i / (w_i + w_j);
-    1.0 - crate::obstacle::transition(share, 0.0, AT_REST_RATIO / (1.0 + AT_REST_RATIO))
+/// How far a robot at its goal steps aside for a neighbour that presses on it
+/// ([`make_room`]), in safe radii `r_ij`; it starts to when the neighbour is closer than
+/// `2·r_ij + ½·ROOM·r_ij`.
+pub const ROOM: f64 = 1.0;
+
+/// Where a robot at its goal moves its goal to make room for the neighbours that press on it:
+/// away from each neighbour closer than `safe + step/2`, by the transition ς of eq.
+/// `eq_switch_func` (1 at `safe`, 0 at `safe + step/2`), at most `step` in all. The robot
+/// steps aside while a neighbour presses on it and returns to its slot and heading once the
+/// neighbour has gone: slots closer together than a robot can pass between (`3·r_ij`: the gap
+/// between two safe discs is one `r_ij`) open up, the robot that presses is let through, and
+/// neighbours parked `safe + step/2` apart or more leave each other alone. Decentralised: the
+/// positions the robot senses are all it needs.
+#[must_use]
+pub fn make_room(
+    p_i: DVec2,
+    neighbours: impl IntoIterator<Item = Neighbour>,
+    safe: f64,
+    step: f64,
+) -> DVec2 {
+    let push: DVec2 = neighbours
+        .into_iter()
+        .map(|n| {
+            let away = (p_i - n.position).normalize_or_zero();
+            (1.0 - crate::obstacle::transition(p_i.distance(n.position), safe, 0.5 * step)) * away
+        })
+        .sum();
+    step * push.clamp_length_max(1.0)
 }
 
 /// Whether `n` is at rest next to the robot `me` (see [`Cluster::at_rest`]).
@@ -411,9 +421,9 @@ mod tests {
 
     /// A parked neighbour in the way is circled when it stands alone and passed when another
     /// parked robot stands within the range of it (a parked formation); a moving one is always
-    /// circled. A robot at rest leaves a moving neighbour to it; robots moving alike do not.
+    /// circled.
     #[test]
-    fn parked_formations_are_passed_and_parked_robots_yield() {
+    fn parked_formations_are_passed() {
         let me = eastbound();
         let parked = |x: f64, y: f64| Neighbour {
             position: DVec2::new(x, y),
@@ -431,11 +441,23 @@ mod tests {
             ..parked(4.0, 0.5)
         };
         assert!(c(&[moving, parked(4.0, 5.5)]).is_some());
-        // Yielding: 1 at rest next to a moving robot (up to the speed floor), 0 alike.
-        assert!(yields(0.0, 2.0) > 0.999);
-        assert_eq!(yields(2.0, 2.0), 0.0);
-        assert_eq!(yields(0.0, 0.0), 0.0);
-        assert_eq!(yields(0.3, 2.0), 0.0);
+    }
+
+    /// A robot steps away from a neighbour that presses on it, by at most the step in all,
+    /// and leaves alone the neighbours `safe + step/2` away or more.
+    #[test]
+    fn a_robot_makes_room_for_a_neighbour_that_presses_on_it() {
+        let (safe, step) = (2.0, 1.0);
+        let room = |ns: &[Neighbour]| make_room(DVec2::ZERO, ns.iter().copied(), safe, step);
+        assert_eq!(room(&[at(-2.0, 0.0)]), DVec2::new(1.0, 0.0));
+        assert_eq!(room(&[at(0.0, 2.5)]), DVec2::ZERO);
+        assert_eq!(room(&[at(3.0, 0.0), at(0.0, -9.0)]), DVec2::ZERO);
+        let between = room(&[at(2.25, 0.0)]);
+        assert!(between.x < 0.0 && between.x > -1.0 && between.y == 0.0);
+        // Pressed from two sides at once: still at most one step.
+        let both = room(&[at(-2.0, 0.0), at(0.0, -2.0)]);
+        assert_close!(both.length(), 1.0, 1e-15);
+        assert_close!(both.x, both.y, 1e-15);
     }
 
     /// A neighbour at rest is circled about itself, one moving alike about the midpoint.
