@@ -164,9 +164,10 @@ where
     // A robot at its goal (within r_ij, let go smoothly by 2·r_ij) makes room for the
     // neighbours that press on it (`make_room`, Exit only): its goal moves by `room`, so that
     // err.p = R(θ_d)ᵀ(p − p_d − room) with θ_d = θ − θ̃.
-    let err = if params.avoidance == Avoidance::Exit {
-        let r = params.safe_radius;
-        let at_goal = 1.0 - transition(err.p.length(), r, r);
+    // Away from its goal (`at_goal` = 0) the shift is exactly zero: skipped.
+    let r = params.safe_radius;
+    let at_goal = 1.0 - transition(err.p.length(), r, r);
+    let err = if params.avoidance == Avoidance::Exit && at_goal > 0.0 {
         let room = at_goal * make_room(pose.p, neighbours.clone(), 2.0 * r, ROOM * r);
         Pose {
             p: err.p - unrotate(theta - err.theta, room),
