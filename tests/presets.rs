@@ -131,3 +131,31 @@ fn example4_ends_in_a_line() {
         "clearance {c}: nobody went near the obstacle"
     );
 }
+
+/// With the speeds saturated (`v_max`, `omega_max`: a fast and a slow robot), every preset
+/// still converges, with no violation: the saturation slows the robots, it does not strand
+/// them. The runs are given SATURATED_RUN_S (at 2 m/s the paper's Example 4 needs about a
+/// minute), since what is asserted is arrival, not a time.
+#[test]
+fn every_preset_converges_with_saturated_speeds() {
+    const SATURATED_RUN_S: f64 = 300.0;
+    for (v_max, omega_max) in [(5.0, 3.0), (2.0, 1.0)] {
+        for p in PRESETS {
+            let mut s = p.scenario();
+            s.params.v_max = Some(v_max);
+            s.params.omega_max = Some(omega_max);
+            s.duration = s.duration.max(SATURATED_RUN_S);
+            let r = run(&s);
+            assert_eq!(r.violations, 0, "{} at v_max {v_max}: violations", p.name);
+            let stranded: Vec<usize> = (0..r.robots.len())
+                .filter(|&k| r.robots[k].converged_at.is_none())
+                .collect();
+            assert!(
+                stranded.is_empty(),
+                "{} at v_max {v_max}, omega_max {omega_max}: robots {stranded:?} did not converge in {} s",
+                p.name,
+                s.duration
+            );
+        }
+    }
+}
