@@ -15,6 +15,8 @@ const CROWD_GLYPH_MIN_PX = 4;
  * CROWD_DISC_MAX robots are on screen (each disc is a path call: see sprites.js).
  */
 export const CROWD_DISC_MIN_PX = 3;
+/** A crowd's bodies are outlined only when at least this long (CSS px). */
+export const CROWD_OUTLINE_MIN_PX = 10;
 const CROWD_DISC_MAX = 1500;
 
 /** A crowd's glyphs as a multiple of a robot's (CSS px: what crowdGlyphPx rounds). */
@@ -75,7 +77,7 @@ export function drawCrowd(ctx, view, scene) {
     g.strokeStyle = colour;
     g.stroke();
   });
-  const outline = px >= 10 * dpr;
+  const outline = px >= CROWD_OUTLINE_MIN_PX * dpr;
   const bodies = layer.sprites(`body|${px}|${dpr}`, side, ROBOT_COLOURS, (g, c, theta, colour) => {
     g.setTransform(dpr, 0, 0, dpr, 0, 0);
     g.beginPath();

@@ -3,7 +3,7 @@
 // nothing of the DOM beyond the canvas it is given (and the canvases of its layers).
 
 import { POSE_STRIDE, STATUS, STATUS_STRIDE } from '../playground/wasm-views.js';
-import { CROWD_DISC_MIN_PX, crowdGlyphScale, drawCrowd } from './crowd.js';
+import { CROWD_DISC_MIN_PX, CROWD_OUTLINE_MIN_PX, crowdGlyphScale, drawCrowd } from './crowd.js';
 import { drawCurves, drawField } from './field.js';
 import {
   addCircle,
@@ -183,11 +183,18 @@ function drawRobots(ctx, view, scene) {
     if (!crowd) drawVirtualObstaclesOf(ctx, view, scene);
   }
   ctx.lineJoin = 'miter';
+  // A crowd's small bodies go without their outline, as on its canvas (render/crowd.js).
+  const outline = !crowd || glyph * ROBOT_LENGTH_PX >= CROWD_OUTLINE_MIN_PX;
   for (let c = 0; c < k && c < n; c++) {
     each(c, (i) =>
       addTriangleAt(view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1]), p[i * POSE_STRIDE + 2], 1),
     );
-    paintBodies(ctx, ROBOT_COLOURS[c]);
+    if (outline) {
+      paintBodies(ctx, ROBOT_COLOURS[c]);
+    } else {
+      ctx.fillStyle = ROBOT_COLOURS[c];
+      ctx.fill();
+    }
   }
 }
 
