@@ -417,6 +417,33 @@ await run(async ({ base, newPage }) => {
       legend.includes('position error') && legend.includes('heading error'),
       `the plots have a legend ("${legend}")`,
     );
+    // The "now" lines read off the pixels too (the plots' canvas holds both, one above the
+    // other; the line is NOW_COLOUR, #2563eb): where the blue columns of each half are.
+    const nowColumns = await part(page, 'plots').evaluate((el) => {
+      const canvas = el.tagName === 'CANVAS' ? el : el.querySelector('canvas');
+      const { width, height } = canvas;
+      const px = canvas.getContext('2d').getImageData(0, 0, width, height).data;
+      const centre = (y0, y1) => {
+        let sum = 0;
+        let weight = 0;
+        for (let y = y0; y < y1; y++) {
+          for (let x = 0; x < width; x++) {
+            const o = 4 * (y * width + x);
+            const [r, g, b] = [px[o], px[o + 1], px[o + 2]];
+            if (b > 180 && r < 110 && g < 160 && b - r > 120) {
+              sum += x;
+              weight += 1;
+            }
+          }
+        }
+        return weight > 10 ? sum / weight : Number.NaN;
+      };
+      return [centre(0, height >> 1), centre(height >> 1, height)].map((x) => (x * canvas.clientWidth) / width);
+    });
+    check(
+      nowColumns.every(Number.isFinite) && Math.abs(nowColumns[0] - nowColumns[1]) < 1,
+      `the two plots' "now" lines line up on the screen (x = ${nowColumns.map((x) => x.toFixed(1)).join(', ')} CSS px)`,
+    );
     const geometry = await page.evaluate((s) => document.querySelector(s).plotGeometry ?? null, PG);
     check(
       geometry?.length === 2 && Math.abs(geometry[0].nowX - geometry[1].nowX) < 0.5,
