@@ -114,6 +114,13 @@ pub fn avoidance_field(gamma_r: DVec2, motion: DVec2, goal_field: DVec2) -> DVec
 ///   overlapping rings are rounded as one: in the notch between two discs their circular
 ///   fields, each turned by its own `θ_r` rule, point into the notch from both sides and sum
 ///   to a field that holds the robot there; turned alike they sum to a field along it.
+/// - on the surface (clearance below [`SURFACE`]`·ε`), where the safety barrier allows no
+///   approach, an obstacle the goal field points into is classified by the goal field instead
+///   of the motion (the `θ_r` rule of eq. `eq_ob_avoid_VF` with `Γ̃_d` for the motion): the
+///   robot circles it towards its goal. Classified by the motion, a robot whose goal lies behind
+///   the disc flips from step to step between `Γ_r⊥` (heading a little into the disc) and `Γ̃_d`
+///   (heading a little out of it, the obstacle let go), and the barrier holds it still either
+///   way.
 #[must_use]
 pub fn blend<'a, I>(
     p: DVec2,
@@ -128,16 +135,17 @@ where
     I::IntoIter: Clone,
 {
     let obstacles = obstacles.into_iter();
+    let moving = |o: &Obstacle| measured(o, p, motion, goal_field, eps, exit.is_some());
     // The turning sense (+1 counter-clockwise) of the nearest obstacle that is circled.
     let sense = exit.and_then(|_| {
         obstacles
             .clone()
             .filter(|o| transition(p.distance(o.center), o.influence, eps) < 1.0)
-            .filter(|o| classify(motion, p - o.center) != Approach::Clear)
+            .filter(|o| classify(moving(o), p - o.center) != Approach::Clear)
             .min_by(|a, b| a.clearance(p).total_cmp(&b.clearance(p)))
             .map(|o| {
                 let gamma_r = p - o.center;
-                avoidance_field(gamma_r, motion, goal_field)
+                avoidance_field(gamma_r, moving(o), goal_field)
                     .dot(gamma_r.perp())
                     .signum()
             })
@@ -153,6 +161,7 @@ where
         // Exit: an obstacle the robot moves away from has no say (ς = 1), which for one
         // obstacle is the paper's `Γ_o = Γ̃_d` and for several keeps such an obstacle's
         // `(1 − ς)·Γ̃_d` from outweighing the ring of another that the robot is entering.
+        let motion = moving(o);
         let approach = classify(motion, gamma_r);
         if exit.is_some() && approach == Approach::Clear {
             continue;
@@ -168,6 +177,28 @@ where
     }
     (keep * goal_field + sum, keep)
 }
+
+/// The direction an obstacle's `θ_r` is measured against in [`blend`]: the motion, or with
+/// the exits (`exit`) the goal field on the surface while it points into the disc.
+#[inline(never)]
+fn measured(
+    o: &Obstacle,
+    p: DVec2,
+    motion: DVec2,
+    goal_field: DVec2,
+    eps: f64,
+    exit: bool,
+) -> DVec2 {
+    if exit && goal_field.dot(p - o.center) < 0.0 && o.clearance(p) < SURFACE * eps {
+        goal_field
+    } else {
+        motion
+    }
+}
+
+/// The band `r_o < d < r_o + SURFACE·ε` in which [`blend`] classifies an obstacle by the goal
+/// field: a robot there is held by the barrier rather than by the field.
+pub const SURFACE: f64 = 0.003;
 
 /// How far an obstacle is let go because the goal is nearer than its surface: 0 while
 /// `to_goal ≥ clearance`, 1 once `to_goal ≤ clearance − ε`, the transition `ς` in between.
@@ -247,6 +278,29 @@ mod tests {
             let f = avoidance_field(gamma_r, m, DVec2::ZERO);
             assert_close!(f.dot(gamma_r), 0.0, 1e-12);
         }
+    }
+
+    /// On the surface, moving out of the disc with a goal field into it: the obstacle is
+    /// circled towards the goal (clockwise here) rather than let go.
+    #[test]
+    fn on_the_surface_the_goal_field_decides() {
+        let o = Obstacle {
+            center: DVec2::ZERO,
+            radius: 1.0,
+            influence: 2.0,
+        };
+        let (p, motion, g) = (
+            DVec2::new(1.0 + 1e-6, 0.0),
+            DVec2::new(0.1, 1.0),
+            DVec2::new(-1.0, -0.5),
+        );
+        let (f, keep) = blend(p, motion, g, [&o], 1.0, Some(10.0));
+        assert_eq!(keep, 0.0);
+        assert!(f.x.abs() < 1e-15 && f.y < 0.0, "{f:?}");
+        // Away from the surface, or in the paper's blend, the obstacle is let go.
+        let far = DVec2::new(1.1, 0.0);
+        assert_eq!(blend(far, motion, g, [&o], 1.0, Some(10.0)), (g, 1.0));
+        assert_eq!(blend(p, motion, g, [&o], 1.0, None).0, g);
     }
 
     #[test]
