@@ -19,6 +19,12 @@ export const CROWD_DISC_MIN_PX = 3;
 export const CROWD_OUTLINE_MIN_PX = 10;
 const CROWD_DISC_MAX = 1500;
 
+/** Whether screen point (x, y) is in `view` or within a glyph's length of it (the glyphs drawn). */
+export function nearView(view, x, y) {
+  const pad = ROBOT_LENGTH_PX;
+  return x > -pad && y > -pad && x < view.width + pad && y < view.height + pad;
+}
+
 /** A crowd's glyphs as a multiple of a robot's (CSS px: what crowdGlyphPx rounds). */
 export function crowdGlyphScale(view, safeRadius) {
   return Math.min(ROBOT_LENGTH_PX, Math.max(CROWD_GLYPH_MIN_PX, 3 * safeRadius * view.scale)) / ROBOT_LENGTH_PX;
@@ -37,8 +43,7 @@ export function drawCrowd(ctx, view, scene) {
   const p = scene.poses;
   const k = ROBOT_COLOURS.length;
   const dpr = scene.dpr;
-  const pad = ROBOT_LENGTH_PX;
-  const onScreen = (x, y) => x > -pad && y > -pad && x < view.width + pad && y < view.height + pad;
+  const onScreen = (x, y) => nearView(view, x, y);
   const rs = s.params.safe_radius * view.scale;
   if (!s.independent && rs >= CROWD_DISC_MIN_PX) {
     let shown = 0;

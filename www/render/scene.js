@@ -3,7 +3,7 @@
 // nothing of the DOM beyond the canvas it is given (and the canvases of its layers).
 
 import { POSE_STRIDE, STATUS, STATUS_STRIDE } from '../playground/wasm-views.js';
-import { CROWD_DISC_MIN_PX, CROWD_OUTLINE_MIN_PX, crowdGlyphScale, drawCrowd } from './crowd.js';
+import { CROWD_DISC_MIN_PX, CROWD_OUTLINE_MIN_PX, crowdGlyphScale, drawCrowd, nearView } from './crowd.js';
 import { drawCurves, drawField } from './field.js';
 import {
   addCircle,
@@ -140,8 +140,7 @@ function drawRobots(ctx, view, scene) {
   // A crowd drawn as vectors (drawScene) keeps what its canvas shows (render/crowd.js): goals
   // and bodies on screen, and safe discs only when wide enough to see.
   const crowd = n > CROWD_STYLE_ABOVE;
-  const pad = ROBOT_LENGTH_PX;
-  const onScreen = (x, y) => x > -pad && y > -pad && x < view.width + pad && y < view.height + pad;
+  const onScreen = (x, y) => nearView(view, x, y);
   const each = (c, add) => {
     ctx.beginPath();
     for (let i = c; i < n; i += k) add(i);
