@@ -37,6 +37,18 @@ use std::f64::consts::FRAC_PI_2;
 /// `1e-15` inside it.
 pub const MARGIN: f64 = 1e-9;
 
+/// A step whose direction `c` (a chord, `|c| ≤ 1`) has `|u·c|` below this slides along a
+/// limit: it is not bounded by it. A robot held exactly on a limit (budget 0) whose field is
+/// tangent to it has a heading a few ulps off the tangent, `u·c ≈ −1e-16`, and without this
+/// the bound `0/1e-16` would stop it there forever (seen on an obstacle's surface with the goal
+/// behind the disc, the field along the surface, `v = 0` for minutes).
+///
+/// Still safe: the squared distance after a step `s·c` is `d² + 2d·s(u·c) + s²|c|²`, which
+/// can only shrink while `s < 2d·1e-12/|c|²`, and then by less than `s·1e-12 < 1e-23·d`; the
+/// barrier holds every distance `MARGIN` = `1e-9` (relative) beyond its limit, so even 10⁶ such
+/// steps in a row stay outside the limit itself.
+pub const ALONG_ROUND_OFF: f64 = 1e-12;
+
 /// The interval of forward speeds `[lo, hi]` (with `lo ≤ 0 ≤ hi`) under which a robot at `p`
 /// moving along `chord` keeps its share of every barrier.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -59,9 +71,10 @@ impl SpeedLimits {
     #[inline]
     fn keep(&mut self, u: DVec2, c: DVec2, dt: f64, budget: f64) {
         let along = u.dot(c) * dt; // d(u·Δp)/dv
-        if along < 0.0 {
+        let tol = ALONG_ROUND_OFF * dt;
+        if along < -tol {
             self.hi = self.hi.min(budget / -along);
-        } else if along > 0.0 {
+        } else if along > tol {
             self.lo = self.lo.max(-budget / along);
         }
     }
@@ -302,6 +315,55 @@ mod tests {
                 assert_eq!(once.hi.to_bits(), each.hi.to_bits());
             }
         }
+    }
+
+    /// A robot on an obstacle's surface (budget 0) whose step is tangent to it up to round-off
+    /// keeps its speed and slides along the surface, never inside the disc. Before
+    /// `ALONG_ROUND_OFF`, an inward component of 1e-16 bounded its speed by 0.
+    #[test]
+    fn a_step_along_a_limit_is_not_stopped_by_round_off() {
+        let disc = Obstacle {
+            center: DVec2::ZERO,
+            radius: 4.0,
+            influence: 5.0,
+        };
+        let (dt, a) = (0.01, 0.05);
+        let on = disc.radius * (1.0 + MARGIN);
+        // At (−on, 0) the tangent is ±Y; the chord leans inward (+X) by 1e-15.
+        let p = DVec2::new(-on, 0.0);
+        let chord = DVec2::new(1e-15, -1.0).normalize();
+        let limits = speed_limits(p, chord, dt, a, 2.0, [], [&disc]);
+        assert!(limits.hi.is_infinite(), "{limits:?}");
+        // Driven along its heading tangent at 4 m/s, turning as a circle of the same radius
+        // would, it stays outside the disc at every step.
+        let params = Params {
+            barrier_rate: Some(a / dt),
+            ..Params::default()
+        };
+        let mut r = Pose::new(-on, 0.0, -std::f64::consts::FRAC_PI_2);
+        let c = Command {
+            v: 4.0,
+            omega: 4.0 / on,
+        };
+        let mut travelled = 0.0;
+        for _ in 0..2000 {
+            let (c, _) = filter(
+                &mut Constraints::new(),
+                &params,
+                dt,
+                r,
+                c,
+                heading(r.theta),
+                [],
+                [&disc],
+            );
+            let next = integrate(r, c, dt);
+            travelled += next.p.distance(r.p);
+            r = next;
+            assert!(disc.clearance(r.p) >= 0.0, "{}", disc.clearance(r.p));
+        }
+        // It went round (at the barrier's stop it would have travelled nothing).
+        assert!(travelled > 70.0, "{travelled}");
     }
 
     /// Two robots driven straight at each other stop outside the safe distance at every step
