@@ -146,12 +146,14 @@ fn obstacle_fields_give_the_same_bits() {
 }
 
 /// A step of a large crowd evaluates its robots on rayon's threads (natively): the same bits
-/// on one thread as on two and as with the parallel step turned off, at every step, and the
-/// same report. 600 robots (above `PARALLEL_FROM`) among obstacles, through the first 4 s.
+/// on one thread as on two, as from outside a pool (the global pool, whose thread count is the
+/// machine's: the step moves onto it) and as with the parallel step turned off, at every step,
+/// and the same report. 100 robots more than `PARALLEL_FROM` among obstacles, through the
+/// first 4 s.
 #[cfg(not(target_arch = "wasm32"))]
 #[test]
 fn threads_give_the_same_bits() {
-    let s = crowd_with_obstacles(600, 12);
+    let s = crowd_with_obstacles(dvf::sim::PARALLEL_FROM + 100, 12);
     let pool = |threads| {
         rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -163,17 +165,25 @@ fn threads_give_the_same_bits() {
     let mut b = Simulation::new(&s);
     let mut c = Simulation::new(&s);
     c.set_parallel(false);
+    let mut d = Simulation::new(&s);
     for k in 1..=400 {
         one.install(|| a.step());
         two.install(|| b.step());
         c.step();
-        for (i, ((x, y), z)) in a
+        d.step();
+        for (i, (((x, y), z), w)) in a
             .robots()
             .iter()
             .zip(b.robots())
             .zip(c.robots())
+            .zip(d.robots())
             .enumerate()
         {
+            assert_eq!(
+                bits(x),
+                bits(w),
+                "robot {i} at step {k}: one thread, global pool"
+            );
             assert_eq!(
                 bits(x),
                 bits(y),
@@ -189,4 +199,5 @@ fn threads_give_the_same_bits() {
     let report = |sim: &Simulation| serde_json::to_string(&sim.report()).unwrap();
     assert_eq!(report(&a), report(&b));
     assert_eq!(report(&a), report(&c));
+    assert_eq!(report(&a), report(&d));
 }

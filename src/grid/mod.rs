@@ -53,6 +53,24 @@ mod tests {
                 .collect();
             assert_eq!(g.of(i), &scan[..], "robot {i} at {p:?}");
         }
+        // Found on threads, the same lists: three threads (twelve chunks, some of them empty
+        // for the smaller sets), built twice so that the second build reuses the chunks'
+        // buffers from a different reach.
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(3)
+                .build()
+                .unwrap();
+            let mut t = Neighbours::new();
+            pool.install(|| {
+                t.build_on_threads(points, 2.0 * reach + 1.0);
+                t.build_on_threads(points, reach);
+            });
+            for i in 0..points.len() {
+                assert_eq!(t.of(i), g.of(i), "robot {i}, on threads");
+            }
+        }
     }
 
     #[test]

@@ -22,6 +22,10 @@ pub struct Neighbours {
     hits: Vec<u32>,
     upper: Vec<u32>,
     cursor: Vec<u32>,
+    // The hits and their starts of each chunk of robots, when they are found on threads
+    // ([`Neighbours::build_on_threads`]; native only).
+    #[cfg(not(target_arch = "wasm32"))]
+    chunks: Vec<(Vec<u32>, Vec<u32>)>,
 }
 
 impl Neighbours {
@@ -57,35 +61,64 @@ impl Neighbours {
             return;
         }
         self.cells.build(points, reach);
-
-        // The hits of each robot, in bucket order: the robots of higher index within reach
-        // among the 3 × 3 cells around it (a robot within reach is at most one cell away along
-        // each axis). "Within reach" is symmetric (the squared distance of a pair is the same
-        // bits either way round), so each pair is tested once.
-        let reach2 = reach * reach;
         self.upper.clear();
-        // `hits[..count]` are the hits so far; the rest is room (kept from build to build), so
-        // that a candidate is written before its test and kept by advancing `count`: no
-        // branch to mispredict.
+        let count = hits(
+            &self.cells,
+            points,
+            reach,
+            0..n,
+            &mut self.hits,
+            &mut self.upper,
+        );
+        self.upper.push(count as u32);
+        self.rows(n, count);
+    }
+
+    /// [`Neighbours::build`] with the robots' hits found in chunks on rayon's threads: the same
+    /// lists (each chunk's hits are those the serial loop finds for its robots, in the same
+    /// order, and are joined in chunk order).
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn build_on_threads(&mut self, points: &[DVec2], reach: f64) {
+        use rayon::prelude::*;
+        let n = points.len();
+        if n <= FEW_ROBOTS || rayon::current_num_threads() < 2 {
+            return self.build(points, reach);
+        }
+        self.cells.build(points, reach);
+        // A few chunks per thread, so that one dense chunk does not hold the others up.
+        let chunks = 4 * rayon::current_num_threads();
+        let size = n.div_ceil(chunks);
+        self.chunks.resize_with(chunks, Default::default);
+        let cells = &self.cells;
+        self.chunks
+            .par_iter_mut()
+            .enumerate()
+            .for_each(|(k, (hits_k, upper_k))| {
+                upper_k.clear();
+                let rows = (k * size).min(n)..((k + 1) * size).min(n);
+                let count = hits(cells, points, reach, rows, hits_k, upper_k);
+                upper_k.push(count as u32);
+            });
+        self.upper.clear();
         let mut count = 0usize;
-        for i in 0..n {
-            self.upper.push(count as u32);
-            let p = points[i];
-            let (runs, k) = self.cells.block(self.cells.coords(p));
-            for &(from, to) in &runs[..k] {
-                let candidates = &self.cells.order()[from as usize..to as usize];
-                if self.hits.len() < count + candidates.len() {
-                    self.hits.resize(2 * (count + candidates.len()), 0);
-                }
-                for &j in candidates {
-                    self.hits[count] = j;
-                    let hit = (j as usize > i) & (points[j as usize].distance_squared(p) <= reach2);
-                    count += usize::from(hit);
-                }
+        for (hits_k, upper_k) in &self.chunks {
+            let found = *upper_k.last().unwrap_or(&0) as usize;
+            let (_, starts) = upper_k.split_last().unwrap_or((&0, &[]));
+            self.upper.extend(starts.iter().map(|&u| u + count as u32));
+            if self.hits.len() < count + found {
+                self.hits.resize(2 * (count + found), 0);
             }
+            self.hits[count..count + found].copy_from_slice(&hits_k[..found]);
+            count += found;
         }
         self.upper.push(count as u32);
+        self.rows(n, count);
+    }
 
+    /// The lists from the hits (`hits[..count]`, robot `i`'s from `upper[i]`).
+    // Inlined into `build` in the wasm build, which has no other caller: smaller.
+    #[cfg_attr(target_arch = "wasm32", inline(always))]
+    fn rows(&mut self, n: usize, count: usize) {
         // Ascending rows without a sort. Row `i` is its neighbours of lower index, then those
         // of higher index. (1) Lengths: robot `j`'s lower neighbours are the `i` whose hits
         // hold `j`. (2) Scattering each `i` into the rows of its hits, for `i` ascending, fills
@@ -155,4 +188,42 @@ impl Neighbours {
         let (start, order) = self.cells.capacities();
         (start, order, self.list.capacity(), self.list.as_ptr())
     }
+}
+
+/// The hits of the robots `rows`, in bucket order, into `hits` from position 0, with each
+/// robot's start pushed to `upper`; returns their count. A robot's hits are the robots of
+/// higher index within `reach` among the 3 × 3 cells around it (a robot within reach is at most
+/// one cell away along each axis). "Within reach" is symmetric (the squared distance of a pair
+/// is the same bits either way round), so each pair is tested once.
+#[cfg_attr(target_arch = "wasm32", inline(always))]
+fn hits(
+    cells: &Cells,
+    points: &[DVec2],
+    reach: f64,
+    rows: std::ops::Range<usize>,
+    hits: &mut Vec<u32>,
+    upper: &mut Vec<u32>,
+) -> usize {
+    let reach2 = reach * reach;
+    // `hits[..count]` are the hits so far; the rest is room (kept from build to build), so
+    // that a candidate is written before its test and kept by advancing `count`: no branch to
+    // mispredict.
+    let mut count = 0usize;
+    for i in rows {
+        upper.push(count as u32);
+        let p = points[i];
+        let (runs, k) = cells.block(cells.coords(p));
+        for &(from, to) in &runs[..k] {
+            let candidates = &cells.order()[from as usize..to as usize];
+            if hits.len() < count + candidates.len() {
+                hits.resize(2 * (count + candidates.len()), 0);
+            }
+            for &j in candidates {
+                hits[count] = j;
+                let hit = (j as usize > i) & (points[j as usize].distance_squared(p) <= reach2);
+                count += usize::from(hit);
+            }
+        }
+    }
+    count
 }

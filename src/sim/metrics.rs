@@ -53,6 +53,9 @@ pub(super) struct Observed<'a> {
     pub reach: f64,
     /// The reach of `near`'s lists (at least `2·r_ij`).
     pub list_reach: f64,
+    /// Whether the passes over the robots run on rayon's threads (native only).
+    #[cfg(not(target_arch = "wasm32"))]
+    pub threaded: bool,
 }
 
 impl Metrics {
@@ -95,7 +98,11 @@ impl Metrics {
         let p = o.params;
         let reach = o.reach;
         self.obstacle_scratch.clear();
-        for (i, r) in o.robots.iter().enumerate() {
+        #[cfg(not(target_arch = "wasm32"))]
+        let quick = o.threaded.then(|| self.observe_in_parallel(o));
+        #[cfg(target_arch = "wasm32")]
+        let quick: Option<(Option<f64>, bool)> = None;
+        for (i, r) in o.robots.iter().enumerate().filter(|_| quick.is_none()) {
             let at_position = r.position_error() <= p.tol_position;
             #[cfg(not(target_arch = "wasm32"))]
             {
@@ -103,11 +110,7 @@ impl Metrics {
                 self.tallies[i].observe(r.last.command.omega, self.reached[i]);
             }
             let inside = at_position && r.heading_error_abs() <= p.tol_heading;
-            match (inside, self.inside_since[i]) {
-                (true, None) => self.inside_since[i] = Some(o.time),
-                (false, Some(_)) => self.inside_since[i] = None,
-                _ => {}
-            }
+            settle(&mut self.inside_since[i], inside, o.time);
             // The obstacles within the reach, as the robot senses them: the clearance metric
             // and the violations (a robot inside a disc is within every reach).
             for k in o.obstacle_cells.near(r.pose.p) {
@@ -153,7 +156,11 @@ impl Metrics {
                 // The lists may hold pairs a little beyond their reach (their skin): those are
                 // left out, so that the pairs seen are those within the reach, whenever the
                 // lists were built.
-                listed_pairs(robots, o.near, o.list_reach, |i, j| pair(i, j, &mut min));
+                match quick {
+                    // No listed pair closer than `2·r_ij`: the closest is all there is to see.
+                    Some((closest, false)) => min = closest,
+                    _ => listed_pairs(robots, o.near, o.list_reach, |i, j| pair(i, j, &mut min)),
+                }
                 // No pair within the reach: the closest pair matters only while no closer one
                 // has been seen, which a swarm at bounded density leaves behind at once.
                 if min.is_none() && self.min_pair.map_or(true, |m| m > o.list_reach) {
@@ -171,6 +178,76 @@ impl Metrics {
         }
         self.violations += new_events(&self.pair_violating, &self.pair_scratch);
         std::mem::swap(&mut self.pair_violating, &mut self.pair_scratch);
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+impl Metrics {
+    /// The pass over the robots of [`Self::observe`] (arrival, smoothness, clearance and the
+    /// robots inside a disc) on rayon's threads, with the smallest distance of the pairs
+    /// [`listed_pairs`] visits (`None` for none) and whether one of them is closer than
+    /// `2·r_ij`. The same bits as the serial pass: each robot's metrics land in its own slots,
+    /// a minimum is exact whatever the order of its terms, and `√` is monotone and correctly
+    /// rounded (the square root of the smallest squared distance is the smallest distance).
+    /// The rare step with a robot inside a disc lists those in a second, serial pass.
+    fn observe_in_parallel(&mut self, o: &Observed<'_>) -> (Option<f64>, bool) {
+        use rayon::prelude::*;
+        let (p, reach, time) = (o.params, o.reach, o.time);
+        let (robots, reach2) = (o.robots, o.list_reach * o.list_reach);
+        let (closest, inside, closest2) = (
+            o.robots,
+            &mut self.reached[..],
+            &mut self.tallies[..],
+            &mut self.inside_since[..],
+        )
+            .into_par_iter()
+            .enumerate()
+            .with_min_len(super::CHEAP_CHUNK)
+            .map(|(i, (r, reached, tally, since))| {
+                let at_position = r.position_error() <= p.tol_position;
+                *reached |= at_position;
+                tally.observe(r.last.command.omega, *reached);
+                let inside = at_position && r.heading_error_abs() <= p.tol_heading;
+                settle(since, inside, time);
+                let mut closest = f64::INFINITY;
+                let mut inside_a_disc = false;
+                for k in o.obstacle_cells.near(r.pose.p) {
+                    let c = o.obstacles[k].clearance(r.pose.p);
+                    if c <= reach {
+                        closest = closest.min(c);
+                    }
+                    inside_a_disc |= c < 0.0;
+                }
+                let closest2 = o
+                    .near
+                    .of(i)
+                    .iter()
+                    .filter(|&&j| j as usize > i)
+                    .map(|&j| robots[j as usize].pose.p.distance_squared(r.pose.p))
+                    .filter(|&d2| d2 <= reach2)
+                    .fold(f64::INFINITY, f64::min);
+                (closest, inside_a_disc, closest2)
+            })
+            .reduce(
+                || (f64::INFINITY, false, f64::INFINITY),
+                |a, b| (a.0.min(b.0), a.1 | b.1, a.2.min(b.2)),
+            );
+        // A clearance within the reach is finite (positions are).
+        if closest.is_finite() {
+            self.min_clearance = Some(self.min_clearance.map_or(closest, |m| m.min(closest)));
+        }
+        if inside {
+            for (i, r) in o.robots.iter().enumerate() {
+                for k in o.obstacle_cells.near(r.pose.p) {
+                    if o.obstacles[k].clearance(r.pose.p) < 0.0 {
+                        self.obstacle_scratch.push((i as u32, k as u32));
+                    }
+                }
+            }
+        }
+        let closest_pair = closest2.is_finite().then(|| closest2.sqrt());
+        let safe = 2.0 * p.safe_radius;
+        (closest_pair, closest_pair.is_some_and(|d| d < safe))
     }
 }
 
@@ -193,6 +270,15 @@ pub(super) fn listed_pairs(
                 each(i, j);
             }
         }
+    }
+}
+
+/// Since when a robot has been at its goal (`since`), now that it is `inside` or not at `time`.
+fn settle(since: &mut Option<f64>, inside: bool, time: f64) {
+    match (inside, *since) {
+        (true, None) => *since = Some(time),
+        (false, Some(_)) => *since = None,
+        _ => {}
     }
 }
 

@@ -8,8 +8,8 @@
 //! integration error to tune away; RK4 would instead re-evaluate the controller inside the
 //! step, which no real robot does. The same input gives the same bits on the same platform:
 //! there is no randomness and no iteration over hashed containers, and the one parallelism
-//! (a large crowd's evaluations on rayon's threads, natively) puts each robot's evaluation of
-//! the same snapshot in its own slot.
+//! (a large crowd's passes over its robots on rayon's threads, natively) puts each robot's
+//! result in its own slot and takes minima, which are exact in any order.
 //!
 //! Over 500 lines with its tests: the loop, the robot's state and the two in-place edits
 //! (`place_robot`, `place_obstacle`) share the loop's private state (the neighbour lists, the
@@ -293,19 +293,28 @@ impl Simulation {
         // Round-off in the distances (a few ulps) must not spend the whole skin.
         let half = 0.5 * skin * (1.0 - 1e-6);
         // Never built (`positions` is empty until then), or some robot moved too far since.
-        let fresh = self.positions.len() == self.robots.len()
-            && self
-                .positions
-                .iter()
-                .zip(&self.robots)
-                .all(|(was, r)| was.distance_squared(r.pose.p) <= half * half);
+        let fresh = self.positions.len() == self.robots.len() && self.none_moved_beyond(half);
         if !fresh {
             // The positions packed together: the search reads them many times over, and a
             // robot's whole state is some 200 bytes.
             self.positions.clear();
             self.positions.extend(self.robots.iter().map(|r| r.pose.p));
-            self.near.build(&self.positions, reach + skin);
+            if self.threaded() {
+                #[cfg(not(target_arch = "wasm32"))]
+                self.near.build_on_threads(&self.positions, reach + skin);
+            } else {
+                self.near.build(&self.positions, reach + skin);
+            }
         }
+    }
+
+    /// Whether no robot has moved more than `half` since the lists were built at `positions`
+    /// (on one thread: a pass as cheap as this costs less than handing it to others).
+    fn none_moved_beyond(&self, half: f64) -> bool {
+        self.positions
+            .iter()
+            .zip(&self.robots)
+            .all(|(was, r)| was.distance_squared(r.pose.p) <= half * half)
     }
 
     /// Each robot's slowest robot within the avoidance range of it (at another position), from
@@ -331,9 +340,8 @@ impl Simulation {
         }
         let range = pair_range(self.params.avoid_radius, self.params.transition_width);
         let range2 = range * range;
-        self.slowest.clear();
-        for (n, r) in self.robots.iter().enumerate() {
-            let p = r.pose.p;
+        let slowest = |n: usize| {
+            let p = self.robots[n].pose.p;
             let mut slowest = f64::INFINITY;
             for &m in self.near.of(n) {
                 let q = self.robots[m as usize].pose.p;
@@ -341,8 +349,21 @@ impl Simulation {
                     slowest = slowest.min(self.speeds[m as usize]);
                 }
             }
-            self.slowest.push(slowest);
+            slowest
+        };
+        let mut out = std::mem::take(&mut self.slowest);
+        if self.threaded() {
+            use rayon::prelude::*;
+            (0..self.robots.len())
+                .into_par_iter()
+                .with_min_len(CHEAP_CHUNK)
+                .map(slowest)
+                .collect_into_vec(&mut out);
+        } else {
+            out.clear();
+            out.extend((0..self.robots.len()).map(slowest));
         }
+        self.slowest = out;
     }
 
     /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
@@ -448,13 +469,12 @@ impl Simulation {
     #[cfg(not(target_arch = "wasm32"))]
     fn evaluate_in_parallel(&mut self) -> bool {
         use rayon::prelude::*;
-        let n = self.robots.len();
-        let threads = rayon::current_num_threads();
-        if !self.parallel || n < PARALLEL_FROM || threads < 2 {
+        if !self.threaded() {
             return false;
         }
+        let n = self.robots.len();
         // A few chunks per thread, so that one slow chunk does not hold the others up.
-        let chunks = 4 * threads;
+        let chunks = 4 * rayon::current_num_threads();
         let size = n.div_ceil(chunks);
         let mut out = std::mem::take(&mut self.evaluated);
         out.resize(n, (Evaluation::default(), DVec2::ZERO));
@@ -469,12 +489,35 @@ impl Simulation {
                     *slot = this.evaluation(i, scratch);
                 }
             });
-        for (i, &(e, chord)) in out.iter().enumerate() {
-            self.store(i, e, chord);
-        }
+        (
+            &mut self.robots[..],
+            &mut self.commands[..],
+            &mut self.chords[..],
+        )
+            .into_par_iter()
+            .zip(&out[..])
+            .with_min_len(CHEAP_CHUNK)
+            .for_each(|((r, c, chord), &(e, ch))| {
+                r.last = e;
+                *c = e.command;
+                *chord = ch;
+            });
         self.evaluated = out;
         self.scratches = scratches;
         true
+    }
+
+    /// Whether this step's passes over the robots run on rayon's threads: from
+    /// [`PARALLEL_FROM`] robots, on two threads or more, unless [`Self::set_parallel`] turned
+    /// it off. Never in the wasm build, which has no threads.
+    #[cfg_attr(target_arch = "wasm32", allow(clippy::unused_self))]
+    fn threaded(&self) -> bool {
+        #[cfg(not(target_arch = "wasm32"))]
+        return self.parallel
+            && self.robots.len() >= PARALLEL_FROM
+            && rayon::current_num_threads() >= 2;
+        #[cfg(target_arch = "wasm32")]
+        false
     }
 
     /// Whether a step of a large crowd evaluates its robots on several threads (natively, with
@@ -518,8 +561,23 @@ impl Simulation {
     // module small (a call per step costs nothing next to the step).
     #[inline(never)]
     pub fn step(&mut self) {
-        for ((r, c), chord) in self.robots.iter_mut().zip(&self.commands).zip(&self.chords) {
-            r.pose = integrate_along(r.pose, *c, self.dt, *chord);
+        #[cfg(not(target_arch = "wasm32"))]
+        if self.threaded() && rayon::current_thread_index().is_none() {
+            // Moved onto one of the pool's threads, the step's passes hand work to the others
+            // and take it back there, instead of putting this thread to sleep and waking it at
+            // the end of each pass (measured: two threads took 0.72–0.89 of one thread's time
+            // with a wake-up per pass, 0.65–0.67 without).
+            return rayon::scope(|_| self.step_here());
+        }
+        self.step_here();
+    }
+
+    /// [`Self::step`] on the calling thread.
+    #[cfg_attr(target_arch = "wasm32", inline(always))]
+    fn step_here(&mut self) {
+        let dt = self.dt;
+        let advance = |((r, c), chord): ((&mut Robot, &Command), &DVec2)| {
+            r.pose = integrate_along(r.pose, *c, dt, *chord);
             // Continued while the robot follows its goal field; back on the principal branch
             // while it circles robots, where the attitude feedback is faded out and the heading
             // error could otherwise run on to where the continued field points away from the
@@ -529,6 +587,24 @@ impl Simulation {
             } else {
                 continue_branch(r.heading_error, r.pose.theta, r.goal.theta)
             };
+        };
+        if self.threaded() {
+            #[cfg(not(target_arch = "wasm32"))]
+            {
+                use rayon::prelude::*;
+                self.robots
+                    .par_iter_mut()
+                    .zip(&self.commands[..])
+                    .zip(&self.chords[..])
+                    .with_min_len(CHEAP_CHUNK)
+                    .for_each(advance);
+            }
+        } else {
+            self.robots
+                .iter_mut()
+                .zip(&self.commands)
+                .zip(&self.chords)
+                .for_each(advance);
         }
         self.steps += 1;
         self.time = self.steps as f64 * self.dt;
@@ -551,6 +627,8 @@ impl Simulation {
             near: &self.near,
             reach,
             list_reach,
+            #[cfg(not(target_arch = "wasm32"))]
+            threaded: self.threaded(),
         });
     }
 
@@ -719,9 +797,17 @@ fn list_reach(p: &Params, slowest_known: bool) -> f64 {
         .max(2.0 * p.safe_radius)
 }
 
-/// From this many robots a step evaluates them on several threads (natively): below, rayon's
-/// hand-off costs more than it saves.
-pub const PARALLEL_FROM: usize = 256;
+/// From this many robots a step runs its passes on several threads (natively): below, rayon's
+/// hand-offs cost more than they save. Measured on `presets::crowd(n)` in open space on two
+/// cores, two threads against one: 1.11–1.16 times the time at 1,000 robots, 0.94–1.02 at
+/// 2,000, 0.75–0.82 at 4,000, 0.64–0.67 at 10,000.
+pub const PARALLEL_FROM: usize = 2048;
+
+/// The fewest robots a thread takes at once in the step's cheap passes (integration, the lists'
+/// freshness, the slowest neighbours, storing, the metrics): below, rayon's hand-off costs
+/// more than the work.
+#[cfg(not(target_arch = "wasm32"))]
+pub(crate) const CHEAP_CHUNK: usize = 1024;
 
 /// A robot evaluation's buffers, reused from robot to robot: its sensed neighbours and the
 /// barrier's constraints.
