@@ -184,7 +184,7 @@ where
     let motion = if goal_body.x < 0.0 { -h } else { h };
     let to_goal = err.p.length();
     let exits = (params.avoidance == Avoidance::Exit).then_some(to_goal);
-    let (gp, keep_o) = blend(pose.p, motion, goal_world, obstacles, eps, exits);
+    let (gp, keep_o, on_surface) = blend(pose.p, motion, goal_world, obstacles, eps, exits);
 
     let range = pair_range(params.avoid_radius, eps);
     let me = Approach {
@@ -193,7 +193,15 @@ where
         field: gp,
         // err.p = R(θ_d)ᵀ(p − p_d) with θ_d = θ − θ̃.
         goal: pose.p - rotate(theta - err.theta, err.p),
-        speed,
+        // On an obstacle's surface the barrier, not the robot, may hold it still: its speed
+        // then counts as at least the circling speed `avoid_speed`, so that it still tells a
+        // parked neighbour from one that moves (by its speed alone, every neighbour would move
+        // as fast as it does).
+        speed: if on_surface {
+            speed.max(params.avoid_speed)
+        } else {
+            speed
+        },
     };
     let vo = cluster(
         me,
@@ -383,5 +391,39 @@ mod tests {
         assert_eq!(e.virtual_obstacle, Some(DVec2::new(0.5, 0.0)));
         // Heading straight at the neighbour: turn left (positive ω).
         assert!(e.command.omega > 0.0);
+    }
+
+    /// A robot that the barrier holds still on an obstacle's surface counts as moving at the
+    /// circling speed, so a neighbour at rest next to it is at rest: it is circled as itself,
+    /// not at the midpoint between the two (which puts the circle through the parked robot).
+    /// Off the surface, a robot at rest next to a robot at rest counts both as moving alike.
+    #[test]
+    fn held_on_a_surface_a_parked_neighbour_is_at_rest() {
+        let p = Params::default();
+        let o = Obstacle {
+            center: DVec2::ZERO,
+            radius: 5.0,
+            influence: 10.0,
+        };
+        let goal = Pose::new(-30.0, -30.0, 0.0);
+        let vo = |y: f64| {
+            let pose = Pose::new(0.0, y, PI);
+            let n = Neighbour {
+                position: DVec2::new(2.0, y + 1.6),
+                speed: 0.0,
+                slowest_near: None,
+            };
+            let e = evaluate(&p, pose, pose.error_to(goal), 0.0, [&o], [n]);
+            (e.virtual_obstacle, n.position, pose.p)
+        };
+        // On the surface (within `SURFACE·ε` of it): the neighbour itself, within the weight
+        // `SPEED_FLOOR / (v_c + 2·SPEED_FLOOR)` of the segment (about 1.3e-3 here).
+        let (c, n, _) = vo(5.0 * (1.0 + 1e-9));
+        let c = c.expect("the neighbour is circled");
+        assert!(c.distance(n) < 2e-3, "{c:?}, neighbour at {n:?}");
+        // Two robots at rest off the surface: the midpoint.
+        let (c, n, me) = vo(7.0);
+        let c = c.expect("the neighbour is circled");
+        assert!(c.distance(0.5 * (n + me)) < 1e-12, "{c:?}");
     }
 }

@@ -98,8 +98,10 @@ pub fn avoidance_field(gamma_r: DVec2, motion: DVec2, goal_field: DVec2) -> DVec
 }
 
 /// The blend of eq. `eq_VF_all_V3` over the sensed obstacles:
-/// `Γ_P = (Π ς_i) Γ̃_d + Σ (1 − ς_i) Γ_oi`. Returns `(Γ_P, Π ς_i)`; the product also scales the
-/// attitude feedback of eq. `eq_nonholo_controller_ob_avoid`.
+/// `Γ_P = (Π ς_i) Γ̃_d + Σ (1 − ς_i) Γ_oi`. Returns `(Γ_P, Π ς_i, on_surface)`; the product
+/// also scales the attitude feedback of eq. `eq_nonholo_controller_ob_avoid`, and
+/// `on_surface` says (with the exits only) whether the robot is within [`SURFACE`]`·ε` of a
+/// disc, where the safety barrier may hold it still.
 ///
 /// `exit = Some(distance to the goal position)` adds two exits the paper lacks (`None` is the
 /// paper's blend):
@@ -129,7 +131,7 @@ pub fn blend<'a, I>(
     obstacles: I,
     eps: f64,
     exit: Option<f64>,
-) -> (DVec2, f64)
+) -> (DVec2, f64, bool)
 where
     I: IntoIterator<Item = &'a Obstacle>,
     I::IntoIter: Clone,
@@ -152,11 +154,14 @@ where
     });
     let mut keep = 1.0;
     let mut sum = DVec2::ZERO;
+    let mut on_surface = false;
     for o in obstacles {
         let gamma_r = p - o.center;
         let mut s = transition(gamma_r.length(), o.influence, eps);
         if let Some(g) = exit {
-            s = 1.0 - (1.0 - s) * (1.0 - goal_first(o.clearance(p), g, eps));
+            let clearance = o.clearance(p);
+            on_surface |= clearance < SURFACE * eps;
+            s = 1.0 - (1.0 - s) * (1.0 - goal_first(clearance, g, eps));
         }
         // Exit: an obstacle the robot moves away from has no say (ς = 1), which for one
         // obstacle is the paper's `Γ_o = Γ̃_d` and for several keeps such an obstacle's
@@ -175,7 +180,7 @@ where
             sum += (1.0 - s) * field;
         }
     }
-    (keep * goal_field + sum, keep)
+    (keep * goal_field + sum, keep, on_surface)
 }
 
 /// The direction an obstacle's `θ_r` is measured against in [`blend`]: the motion, or with
@@ -294,12 +299,16 @@ mod tests {
             DVec2::new(0.1, 1.0),
             DVec2::new(-1.0, -0.5),
         );
-        let (f, keep) = blend(p, motion, g, [&o], 1.0, Some(10.0));
+        let (f, keep, on_surface) = blend(p, motion, g, [&o], 1.0, Some(10.0));
         assert_eq!(keep, 0.0);
+        assert!(on_surface);
         assert!(f.x.abs() < 1e-15 && f.y < 0.0, "{f:?}");
         // Away from the surface, or in the paper's blend, the obstacle is let go.
         let far = DVec2::new(1.1, 0.0);
-        assert_eq!(blend(far, motion, g, [&o], 1.0, Some(10.0)), (g, 1.0));
+        assert_eq!(
+            blend(far, motion, g, [&o], 1.0, Some(10.0)),
+            (g, 1.0, false)
+        );
         assert_eq!(blend(p, motion, g, [&o], 1.0, None).0, g);
     }
 
@@ -311,10 +320,10 @@ mod tests {
             influence: 2.0,
         };
         let g = DVec2::new(-3.0, 1.0);
-        let (f, keep) = blend(DVec2::new(10.0, 0.0), -DVec2::X, g, [&o], 0.5, None);
+        let (f, keep, _) = blend(DVec2::new(10.0, 0.0), -DVec2::X, g, [&o], 0.5, None);
         assert_eq!((f, keep), (g, 1.0));
         // Inside the ring, approaching: purely tangential, attitude feedback off.
-        let (f, keep) = blend(
+        let (f, keep, _) = blend(
             DVec2::new(1.5, 0.0),
             DVec2::new(-1.0, 0.2),
             g,
