@@ -251,8 +251,6 @@ impl Metrics {
     }
 }
 
-/// Violation events: the pairs violating `now` that were not at the last observation (`was`;
-/// both lists ascending: a merge).
 /// The pairs `(i, j)`, `i < j`, in ascending order, of the robots `near` lists within `reach`
 /// of each other: the lists may hold pairs a little beyond their reach (their skin, see
 /// `Simulation::find_neighbours`), which are left out, so that these are exactly the pairs
@@ -282,6 +280,8 @@ fn settle(since: &mut Option<f64>, inside: bool, time: f64) {
     }
 }
 
+/// Violation events: the pairs violating `now` that were not at the last observation (`was`;
+/// both lists ascending: a merge).
 fn new_events(was: &[(u32, u32)], now: &[(u32, u32)]) -> usize {
     let mut was = was.iter().peekable();
     let mut events = 0;

@@ -396,9 +396,14 @@ impl Simulation {
     }
 
     fn store(&mut self, i: usize, e: Evaluation, chord: DVec2) {
-        self.robots[i].last = e;
-        self.commands[i] = e.command;
-        self.chords[i] = chord;
+        put(
+            (
+                &mut self.robots[i],
+                &mut self.commands[i],
+                &mut self.chords[i],
+            ),
+            &(e, chord),
+        );
     }
 
     /// Robot `i`'s command from what it senses now (the robots within `R_s` at the snapshot's
@@ -497,11 +502,7 @@ impl Simulation {
             .into_par_iter()
             .zip(&out[..])
             .with_min_len(CHEAP_CHUNK)
-            .for_each(|((r, c, chord), &(e, ch))| {
-                r.last = e;
-                *c = e.command;
-                *chord = ch;
-            });
+            .for_each(|(slots, evaluated)| put(slots, evaluated));
         self.evaluated = out;
         self.scratches = scratches;
         true
@@ -803,11 +804,23 @@ fn list_reach(p: &Params, slowest_known: bool) -> f64 {
 /// 2,000, 0.75–0.82 at 4,000, 0.64–0.67 at 10,000.
 pub const PARALLEL_FROM: usize = 2048;
 
-/// The fewest robots a thread takes at once in the step's cheap passes (integration, the lists'
-/// freshness, the slowest neighbours, storing, the metrics): below, rayon's hand-off costs
+/// The fewest robots a thread takes at once in the step's cheap passes (integration, the
+/// slowest neighbours, storing the evaluations, the metrics): below, rayon's hand-off costs
 /// more than the work.
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) const CHEAP_CHUNK: usize = 1024;
+
+/// Stores a robot's evaluation and the chord of its step in its slots: its state's `last`, its
+/// command and its chord.
+#[inline]
+fn put(
+    (r, command, chord): (&mut Robot, &mut Command, &mut DVec2),
+    &(e, ch): &(Evaluation, DVec2),
+) {
+    r.last = e;
+    *command = e.command;
+    *chord = ch;
+}
 
 /// A robot evaluation's buffers, reused from robot to robot: its sensed neighbours and the
 /// barrier's constraints.
