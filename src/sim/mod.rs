@@ -186,7 +186,7 @@ impl Simulation {
             speeds: vec![0.0; n],
         };
         sim.build_obstacle_cells();
-        sim.evaluate_all();
+        sim.evaluate_all(None);
         sim.observe();
         sim
     }
@@ -284,16 +284,18 @@ impl Simulation {
     /// (the evaluation, the metrics, `min_listed_pair_distance`), so they see exactly the pairs
     /// within the reach, in ascending index, whenever the lists were built. A crowd at 20 m/s
     /// (reach 10 m, skin 2.5 m) rebuilds about every sixth step.
-    fn find_neighbours(&mut self) {
+    ///
+    /// `none_moved` is whether no robot has moved more than half the skin since, when the
+    /// caller has found it already (the step's integration, on threads); `None` tests it here.
+    fn find_neighbours(&mut self, none_moved: Option<bool>) {
         if !self.listed() {
             return;
         }
         let reach = self.reach;
         let skin = SKIN * reach;
-        // Round-off in the distances (a few ulps) must not spend the whole skin.
-        let half = 0.5 * skin * (1.0 - 1e-6);
         // Never built (`positions` is empty until then), or some robot moved too far since.
-        let fresh = self.positions.len() == self.robots.len() && self.none_moved_beyond(half);
+        let fresh = self.positions.len() == self.robots.len()
+            && none_moved.unwrap_or_else(|| self.none_moved_beyond(self.half_skin()));
         if !fresh {
             // The positions packed together: the search reads them many times over, and a
             // robot's whole state is some 200 bytes.
@@ -308,8 +310,15 @@ impl Simulation {
         }
     }
 
+    /// How far a robot may move before the lists are rebuilt: half their skin, less the
+    /// round-off of a few ulps in the distances, which must not spend the whole skin.
+    fn half_skin(&self) -> f64 {
+        let skin = SKIN * self.reach;
+        0.5 * skin * (1.0 - 1e-6)
+    }
+
     /// Whether no robot has moved more than `half` since the lists were built at `positions`
-    /// (on one thread: a pass as cheap as this costs less than handing it to others).
+    /// (a pass of its own on one thread; a step on threads finds it while it integrates).
     fn none_moved_beyond(&self, half: f64) -> bool {
         self.positions
             .iter()
@@ -367,12 +376,18 @@ impl Simulation {
     }
 
     /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
-    fn evaluate_all(&mut self) {
+    ///
+    /// `advanced` is `Some` when the step's integration has copied the snapshot's speeds
+    /// already, and holds whether no robot moved more than half the lists' skin (see
+    /// [`Self::find_neighbours`]); `None` does both here.
+    fn evaluate_all(&mut self, advanced: Option<bool>) {
         // Every robot sees the speeds of the same snapshot, whatever the loop order.
-        for (s, r) in self.speeds.iter_mut().zip(&self.robots) {
-            *s = r.last.command.v.abs();
+        if advanced.is_none() {
+            for (s, r) in self.speeds.iter_mut().zip(&self.robots) {
+                *s = r.last.command.v.abs();
+            }
         }
-        self.find_neighbours();
+        self.find_neighbours(advanced);
         self.find_slowest();
         #[cfg(not(target_arch = "wasm32"))]
         if self.evaluate_in_parallel() {
@@ -589,16 +604,35 @@ impl Simulation {
                 continue_branch(r.heading_error, r.pose.theta, r.goal.theta)
             };
         };
+        // Set on threads only, which the wasm build has not.
+        #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
+        let mut advanced = None;
         if self.threaded() {
+            // On threads the integration also copies the snapshot's speeds and tests the
+            // lists' freshness, robot by robot: two serial passes fewer, during which the other
+            // threads would fall asleep and after which they would have to be woken (measured
+            // at 10,000 robots, two threads against one, six runs each: 0.65–0.70 with those
+            // passes apart, 0.55–0.64 with them here).
             #[cfg(not(target_arch = "wasm32"))]
             {
                 use rayon::prelude::*;
-                self.robots
+                let (half, was) = (self.half_skin(), &self.positions[..]);
+                let none_moved = self
+                    .robots
                     .par_iter_mut()
                     .zip(&self.commands[..])
                     .zip(&self.chords[..])
+                    .zip(&mut self.speeds[..])
+                    .enumerate()
                     .with_min_len(CHEAP_CHUNK)
-                    .for_each(advance);
+                    .map(|(i, (((r, c), chord), speed))| {
+                        *speed = r.last.command.v.abs();
+                        advance(((&mut *r, c), chord));
+                        was.get(i)
+                            .is_some_and(|w| w.distance_squared(r.pose.p) <= half * half)
+                    })
+                    .reduce(|| true, |a, b| a && b);
+                advanced = Some(none_moved);
             }
         } else {
             self.robots
@@ -609,7 +643,7 @@ impl Simulation {
         }
         self.steps += 1;
         self.time = self.steps as f64 * self.dt;
-        self.evaluate_all();
+        self.evaluate_all(advanced);
         self.observe();
     }
 
@@ -671,7 +705,7 @@ impl Simulation {
             // Only robot `i` depends on its own goal and heading.
             self.evaluate_robot(i);
         } else {
-            self.find_neighbours();
+            self.find_neighbours(None);
             self.find_slowest();
             let near = self.sense_margin();
             let affected = |q: DVec2| q.distance(was) <= near || q.distance(now) <= near;
@@ -801,7 +835,7 @@ fn list_reach(p: &Params, slowest_known: bool) -> f64 {
 /// From this many robots a step runs its passes on several threads (natively): below, rayon's
 /// hand-offs cost more than they save. Measured on `presets::crowd(n)` in open space on two
 /// cores, two threads against one: 1.11–1.16 times the time at 1,000 robots, 0.94–1.02 at
-/// 2,000, 0.75–0.82 at 4,000, 0.64–0.67 at 10,000.
+/// 2,000, 0.73–0.75 at 4,000, 0.55–0.64 at 10,000.
 pub const PARALLEL_FROM: usize = 2048;
 
 /// The fewest robots a thread takes at once in the step's cheap passes (integration, the
