@@ -118,7 +118,6 @@ pub struct Simulation {
     reach: f64,
     // Whether the step finds each robot's slowest robots within the avoidance range
     // (`find_slowest`), so that the lists need not reach twice that range (`slowest_known`).
-    #[cfg_attr(target_arch = "wasm32", allow(dead_code))]
     slowest_known: bool,
     // Per robot, the smallest speed of the robots within the avoidance range of it (at
     // another position), +∞ for none; empty unless `slowest_known`.
@@ -334,16 +333,7 @@ impl Simulation {
     /// range, every robot within the range of a neighbour within the range is sensed. The
     /// deciding robot itself may be the slowest, which changes nothing: it is never at rest
     /// next to itself (`swarm::AT_REST_RATIO` < 1), nor is any robot at least as fast.
-    // Natively only: the wasm build searches as before (the same answer, and no room in the
-    // module's size budget), see `slowest_known`.
-    #[cfg_attr(target_arch = "wasm32", allow(clippy::unused_self))]
     fn find_slowest(&mut self) {
-        #[cfg(not(target_arch = "wasm32"))]
-        self.find_slowest_natively();
-    }
-
-    #[cfg(not(target_arch = "wasm32"))]
-    fn find_slowest_natively(&mut self) {
         if !self.slowest_known {
             return;
         }
@@ -362,12 +352,15 @@ impl Simulation {
         };
         let mut out = std::mem::take(&mut self.slowest);
         if self.threaded() {
-            use rayon::prelude::*;
-            (0..self.robots.len())
-                .into_par_iter()
-                .with_min_len(CHEAP_CHUNK)
-                .map(slowest)
-                .collect_into_vec(&mut out);
+            #[cfg(not(target_arch = "wasm32"))]
+            {
+                use rayon::prelude::*;
+                (0..self.robots.len())
+                    .into_par_iter()
+                    .with_min_len(CHEAP_CHUNK)
+                    .map(slowest)
+                    .collect_into_vec(&mut out);
+            }
         } else {
             out.clear();
             out.extend((0..self.robots.len()).map(slowest));
@@ -797,11 +790,7 @@ impl Simulation {
 /// ([`Simulation::find_slowest`]) and give its neighbours' to the robot that senses them: with
 /// the default avoidance (the paper's looks for no parked formation) and a sensing radius at
 /// least twice the range (so that a robot senses every robot its search would have found).
-/// Natively only: the wasm module, at its size budget, keeps the search.
 fn slowest_known(p: &Params) -> bool {
-    if cfg!(target_arch = "wasm32") {
-        return false;
-    }
     let range = pair_range(p.avoid_radius, p.transition_width);
     p.avoidance == Avoidance::Exit
         && p.sense_radius
