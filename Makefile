@@ -9,11 +9,12 @@ export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
 tools:
 	bash .ci/install
 
-# The registry's sources, whose paths the module's panic messages name: shortened to the crate's
-# own folder (`serde_json-1.0.154/src/de.rs`), 353 bytes of the module's budget. The flag is for
-# the wasm target only, so that the native build and the build scripts keep their cache.
-REGISTRY_SRC := $(firstword $(wildcard $(or $(CARGO_HOME),$(HOME)/.cargo)/registry/src/index.crates.io-*))
-WASM_REMAP := $(if $(REGISTRY_SRC),--remap-path-prefix=$(REGISTRY_SRC)/=)
+# The registry's sources, whose paths the module's panic messages name, are shortened to each
+# crate's own folder (`serde_json-1.0.154/src/de.rs`): 353 bytes of the module's budget. Found
+# once the crates are fetched, for the wasm target only, so that the native build and the
+# build scripts keep their cache.
+REMAP_REGISTRY = for d in "$${CARGO_HOME:-$$HOME/.cargo}"/registry/src/*/; do \
+	  [ -d "$$d" ] && printf -- '--remap-path-prefix=%s= ' "$$d"; done
 
 # Release build of the wasm package into www/pkg (wasm-opt from npm's binaryen, see .ci/install),
 # with its TypeScript declarations (www/pkg/dvf.d.ts). The crate at opt-level 2 for wasm (3
@@ -21,7 +22,8 @@ WASM_REMAP := $(if $(REGISTRY_SRC),--remap-path-prefix=$(REGISTRY_SRC)/=)
 # "z" for wasm ("s" natively, Cargo.toml): 374 bytes, which the wasm step's slowest-neighbour
 # pass needed; none of them is in the step's loop.
 build-wasm: tools
-	CARGO_PROFILE_RELEASE_OPT_LEVEL=2 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="$(WASM_REMAP)" \
+	cargo fetch --quiet
+	CARGO_PROFILE_RELEASE_OPT_LEVEL=2 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="$$($(REMAP_REGISTRY))" \
 	  wasm-pack build --release --target web --out-dir www/pkg \
 	  -- --config 'profile.release.package."*".opt-level="z"'
 
