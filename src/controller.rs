@@ -33,7 +33,7 @@
 use crate::field::goal_field_body;
 use crate::obstacle::{blend, goal_first, transition, Obstacle};
 use crate::params::{Avoidance, Params};
-use crate::se2::{heading, rotate, unrotate, unrotate_by, Pose};
+use crate::se2::{heading, unrotate, unrotate_by, Pose};
 use crate::swarm::{cluster, make_room, pair_range, tangent_field, Approach, Neighbour, ROOM};
 use glam::DVec2;
 
@@ -192,7 +192,8 @@ where
         motion,
         field: gp,
         // err.p = R(θ_d)ᵀ(p − p_d) with θ_d = θ − θ̃.
-        goal: pose.p - rotate(theta - err.theta, err.p),
+        goal_error: err.p,
+        goal_attitude: theta - err.theta,
         // On an obstacle's surface the barrier, not the robot, may hold it still: its speed
         // then counts as at least the circling speed `avoid_speed`, so that it still tells a
         // parked neighbour from one that moves (by its speed alone, every neighbour would move

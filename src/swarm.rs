@@ -67,10 +67,23 @@ pub struct Approach {
     pub motion: DVec2,
     /// The field it would follow without robots to avoid (`Γ_P`, world frame).
     pub field: DVec2,
-    /// Its goal position.
-    pub goal: DVec2,
+    /// Where its goal lies, as the translation of its error pose, `err.p = R(θ_d)ᵀ(p − p_d)`
+    /// ([`crate::se2::Pose::error_to`], `p_d` moved by `make_room` at the goal) ...
+    pub goal_error: DVec2,
+    /// ... and the goal's attitude `θ_d` on the robot's branch, `θ − θ̃`: [`Approach::goal`]
+    /// turns the two into the goal position, only where a neighbour at rest may stand in the
+    /// way (in open space no robot needs it, and it costs a sine and a cosine).
+    pub goal_attitude: f64,
     /// Its speed `|v_i|` (m/s).
     pub speed: f64,
+}
+
+impl Approach {
+    /// Its goal position, `p − R(θ_d)·err.p`.
+    #[must_use]
+    pub fn goal(&self) -> DVec2 {
+        self.position - crate::se2::rotate(self.goal_attitude, self.goal_error)
+    }
 }
 
 /// The virtual obstacle a robot avoids among its sensed `neighbours`, or `None`.
@@ -233,7 +246,7 @@ fn aside(me: Approach, n: Neighbour, safe: f64) -> f64 {
     if !at_rest(me, n) {
         return 0.0;
     }
-    let way = segment_distance(n.position, me.position, me.goal);
+    let way = segment_distance(n.position, me.position, me.goal());
     crate::obstacle::transition(way, safe, (BLOCKING - 1.0) * safe)
 }
 
@@ -339,7 +352,8 @@ mod tests {
             position: DVec2::ZERO,
             motion: DVec2::X,
             field: DVec2::X,
-            goal: DVec2::new(20.0, 0.0),
+            goal_error: DVec2::new(-20.0, 0.0),
+            goal_attitude: 0.0,
             speed: 1.0,
         };
         // Paper: the centroid of all five, behind the robot.
@@ -370,7 +384,8 @@ mod tests {
             position: DVec2::ZERO,
             motion: DVec2::X,
             field: DVec2::X,
-            goal: DVec2::new(10.0, 0.0),
+            goal_error: DVec2::new(-10.0, 0.0),
+            goal_attitude: 0.0,
             speed: 2.0,
         }
     }
@@ -403,12 +418,12 @@ mod tests {
             0.0
         );
         assert_close!(
-            segment_distance(DVec2::new(5.0, 3.0), DVec2::ZERO, me.goal),
+            segment_distance(DVec2::new(5.0, 3.0), DVec2::ZERO, me.goal()),
             3.0,
             0.0
         );
         assert_close!(
-            segment_distance(DVec2::new(13.0, 4.0), DVec2::ZERO, me.goal),
+            segment_distance(DVec2::new(13.0, 4.0), DVec2::ZERO, me.goal()),
             5.0,
             0.0
         );

@@ -39,6 +39,8 @@ use crate::params::{Avoidance, Params};
 use crate::safety;
 use crate::scenario::Scenario;
 use crate::se2::{continue_branch, wrap_angle, Pose};
+#[cfg(not(target_arch = "wasm32"))]
+use crate::se2::{heading, unrotate_by};
 use crate::swarm::{cluster_reach, pair_range, Neighbour};
 use crate::unicycle::integrate_along;
 use crate::Command;
@@ -135,6 +137,11 @@ pub struct Simulation {
     // Each command's chord (see `safety::filter`).
     chords: Vec<DVec2>,
     speeds: Vec<f64>,
+    // Each robot's goal attitude as a unit vector (`heading(goal.theta)`), by which its error
+    // pose rotates at every step: the goal changes only in `place_robot`. Natively only: the
+    // wasm module has no room in its size budget for it, and takes the sine and cosine again.
+    #[cfg(not(target_arch = "wasm32"))]
+    goal_headings: Vec<DVec2>,
 }
 
 impl Simulation {
@@ -183,7 +190,13 @@ impl Simulation {
             commands: vec![Command::default(); n],
             chords: vec![DVec2::ZERO; n],
             speeds: vec![0.0; n],
+            #[cfg(not(target_arch = "wasm32"))]
+            goal_headings: Vec::new(),
         };
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            sim.goal_headings = sim.robots.iter().map(|r| heading(r.goal.theta)).collect();
+        }
         sim.build_obstacle_cells();
         sim.evaluate_all(None);
         sim.observe();
@@ -450,7 +463,7 @@ impl Simulation {
             }
         }
         let err = Pose {
-            p: me.pose.error_to(me.goal).p,
+            p: self.error_position(i),
             theta: me.heading_error,
         };
         let mut e = self.evaluate_at(me.pose, err, self.speeds[i], neighbours);
@@ -473,6 +486,17 @@ impl Simulation {
             sensed,
         );
         (e, chord)
+    }
+
+    /// Robot `i`'s `pose.error_to(goal).p`: natively with its goal's sine and cosine taken
+    /// once (`goal_headings`), the same bits.
+    #[inline]
+    fn error_position(&self, i: usize) -> DVec2 {
+        let r = &self.robots[i];
+        #[cfg(not(target_arch = "wasm32"))]
+        return unrotate_by(self.goal_headings[i], r.pose.p - r.goal.p);
+        #[cfg(target_arch = "wasm32")]
+        r.pose.error_to(r.goal).p
     }
 
     /// Evaluates every robot on the threads of rayon's pool, in chunks, each with its own
@@ -693,6 +717,10 @@ impl Simulation {
         }
         let was = self.robots[i].pose.p;
         self.robots[i] = Robot::at(pose, goal);
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.goal_headings[i] = heading(self.robots[i].goal.theta);
+        }
         let now = self.robots[i].pose.p;
         if now == was {
             // Only robot `i` depends on its own goal and heading.
