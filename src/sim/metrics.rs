@@ -102,7 +102,13 @@ impl Metrics {
         let quick = o.threaded.then(|| self.observe_in_parallel(o));
         #[cfg(target_arch = "wasm32")]
         let quick: Option<(Option<f64>, bool)> = None;
+        // On one thread, the closest listed pair found on the way, as on threads.
+        let listed = !o.independent && o.neighbourhood == Neighbourhood::Grid;
+        let mut closest2 = f64::INFINITY;
         for (i, r) in o.robots.iter().enumerate().filter(|_| quick.is_none()) {
+            if listed {
+                closest2 = closest2.min(closest_listed2(o, i));
+            }
             let at_position = r.position_error() <= p.tol_position;
             #[cfg(not(target_arch = "wasm32"))]
             {
@@ -129,6 +135,7 @@ impl Metrics {
             return;
         }
         let safe = 2.0 * p.safe_radius;
+        let quick = quick.or_else(|| listed.then(|| closest_pair(closest2, safe)));
         let robots = o.robots;
         let n = robots.len();
         self.pair_scratch.clear();
@@ -193,7 +200,6 @@ impl Metrics {
     fn observe_in_parallel(&mut self, o: &Observed<'_>) -> (Option<f64>, bool) {
         use rayon::prelude::*;
         let (p, reach, time) = (o.params, o.reach, o.time);
-        let (robots, reach2) = (o.robots, o.list_reach * o.list_reach);
         let (closest, inside, closest2) = (
             o.robots,
             &mut self.reached[..],
@@ -218,15 +224,7 @@ impl Metrics {
                     }
                     inside_a_disc |= c < 0.0;
                 }
-                let closest2 = o
-                    .near
-                    .of(i)
-                    .iter()
-                    .filter(|&&j| j as usize > i)
-                    .map(|&j| robots[j as usize].pose.p.distance_squared(r.pose.p))
-                    .filter(|&d2| d2 <= reach2)
-                    .fold(f64::INFINITY, f64::min);
-                (closest, inside_a_disc, closest2)
+                (closest, inside_a_disc, closest_listed2(o, i))
             })
             .reduce(
                 || (f64::INFINITY, false, f64::INFINITY),
@@ -245,10 +243,29 @@ impl Metrics {
                 }
             }
         }
-        let closest_pair = closest2.is_finite().then(|| closest2.sqrt());
-        let safe = 2.0 * p.safe_radius;
-        (closest_pair, closest_pair.is_some_and(|d| d < safe))
+        closest_pair(closest2, 2.0 * p.safe_radius)
     }
+}
+
+/// The smallest squared distance from robot `i` to the robots of higher index its list holds
+/// within the lists' reach (`+∞` for none): the pairs [`listed_pairs`] visits for `i`.
+fn closest_listed2(o: &Observed<'_>, i: usize) -> f64 {
+    let (robots, reach2) = (o.robots, o.list_reach * o.list_reach);
+    let p = robots[i].pose.p;
+    // Without a branch to mispredict: a pair not counted adds +∞.
+    o.near.of(i).iter().fold(f64::INFINITY, |m, &j| {
+        let d2 = robots[j as usize].pose.p.distance_squared(p);
+        let counted = (j as usize > i) & (d2 <= reach2);
+        m.min(if counted { d2 } else { f64::INFINITY })
+    })
+}
+
+/// From the smallest squared distance of the listed pairs, their smallest distance (`None`
+/// for none: `+∞`) and whether it is below `safe`. The same bits as the smallest of their
+/// distances: `√` is monotone and correctly rounded.
+fn closest_pair(closest2: f64, safe: f64) -> (Option<f64>, bool) {
+    let closest = closest2.is_finite().then(|| closest2.sqrt());
+    (closest, closest.is_some_and(|d| d < safe))
 }
 
 /// The pairs `(i, j)`, `i < j`, in ascending order, of the robots `near` lists within `reach`

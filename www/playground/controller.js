@@ -887,8 +887,27 @@ export class Controller {
   }
 }
 
+/**
+ * Whether this engine runs WebAssembly's 128-bit SIMD, which the simulator's module is built
+ * with: a module of one function that splats a constant into a vector and counts its bits (the
+ * test the npm package wasm-feature-detect makes).
+ */
+function hasWasmSimd() {
+  const probe = [
+    0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11,
+  ];
+  try {
+    return WebAssembly.validate(new Uint8Array(probe));
+  } catch {
+    return false;
+  }
+}
+
 /** The message for a module that could not be loaded, with what to do about it. */
 function wasmFailure(e) {
+  if (typeof WebAssembly === 'object' && !hasWasmSimd()) {
+    return 'This browser cannot run the simulator: it needs WebAssembly with 128-bit SIMD (Chrome or Edge 91, Firefox 89, Safari 16.4 or later).';
+  }
   if (globalThis.location?.protocol === 'file:') {
     return 'This page was opened from a file (file://), and browsers load the simulator (WebAssembly) only over HTTP. Serve the folder over HTTP, e.g. run "python3 -m http.server" in it and open http://localhost:8000/.';
   }
