@@ -117,7 +117,7 @@ pub fn cluster(
     let p_i = me.position;
     let all = neighbours.into_iter();
     let sensed = all.clone();
-    let in_range = all.filter(move |n| n.position.distance(p_i) <= range);
+    let in_range = all.filter(move |n| within(n.position, p_i, range));
     let (center, clearance, at_rest, aside) = match avoidance {
         Avoidance::Paper => (
             virtual_obstacle(p_i, in_range.map(|n| n.position))?,
@@ -154,6 +154,21 @@ pub fn cluster(
         at_rest,
         aside,
     })
+}
+
+/// `q.distance(p) <= r`, bit for bit, with a square root only within a relative 1e-9 of the
+/// border: below `r²(1 − 1e-9)` (rounded twice, still below `r²`) the distance is below `r`,
+/// and above `r²(1 + 1e-9)` it exceeds `r` by far more than the half ulp of its rounding.
+#[inline]
+fn within(q: DVec2, p: DVec2, r: f64) -> bool {
+    let (d2, r2) = (q.distance_squared(p), r * r);
+    if d2 <= r2 * (1.0 - 1e-9) {
+        true
+    } else if d2 > r2 * (1.0 + 1e-9) {
+        false
+    } else {
+        d2.sqrt() <= r
+    }
 }
 
 /// A neighbour at rest is avoided only if it stands within this many safe distances of the
@@ -341,6 +356,33 @@ mod tests {
             speed: 1.0,
             slowest_near: None,
         }
+    }
+
+    /// `within` answers as the distance does, at random and on points a few ulps from the
+    /// border (where the squared comparison alone would err).
+    #[test]
+    fn within_is_the_distance_compared() {
+        let mut rng = crate::testing::XorShift(0x9E37_79B9_7F4A_7C15);
+        let mut disagree_squared = 0;
+        for k in 0..20_000 {
+            let p = DVec2::new(rng.unit() * 100.0 - 50.0, rng.unit() * 100.0 - 50.0);
+            let r = 0.5 + rng.unit() * 20.0;
+            let angle = rng.unit() * 2.0 * PI;
+            let mut q = p + r * DVec2::new(angle.cos(), angle.sin());
+            if k % 2 == 0 {
+                // Anywhere in a disc of twice the radius.
+                q = p + (rng.unit() * 2.0) * (q - p);
+            } else {
+                // A few ulps off the border, either way.
+                let nudge = (k % 7) as i64 - 3;
+                q.x = f64::from_bits((q.x.to_bits() as i64 + nudge) as u64);
+            }
+            assert_eq!(within(q, p, r), q.distance(p) <= r, "q {q}, p {p}, r {r}");
+            disagree_squared +=
+                usize::from((q.distance_squared(p) <= r * r) != (q.distance(p) <= r));
+        }
+        // The border cases are real: the plain squared comparison gets some of them wrong.
+        assert!(disagree_squared > 0);
     }
 
     #[test]
