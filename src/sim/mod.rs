@@ -868,7 +868,7 @@ fn list_reach(p: &Params, slowest_known: bool) -> f64 {
 /// From this many robots a step runs its passes on several threads (natively): below, rayon's
 /// hand-offs cost more than they save. Measured on `presets::crowd(n)` in open space on two
 /// cores, two threads against one: 1.11–1.16 times the time at 1,000 robots, 0.94–1.02 at
-/// 2,000, 0.73–0.75 at 4,000, 0.55–0.64 at 10,000.
+/// 2,000, 0.73–0.75 at 4,000, 0.55–0.64 at 10,000 (README, Performance, "Two threads").
 pub const PARALLEL_FROM: usize = 2048;
 
 /// The fewest robots a thread takes at once in the step's cheap passes (integration, the
