@@ -335,7 +335,7 @@ impl Simulation {
         self.positions
             .iter()
             .zip(&self.robots)
-            .all(|(was, r)| was.distance_squared(r.pose.p) <= half * half)
+            .all(|(&was, r)| moved_within(was, r.pose.p, half))
     }
 
     /// Each robot's slowest robot within the avoidance range of it (at another position), from
@@ -444,17 +444,21 @@ impl Simulation {
         let me = self.robots[i];
         let neighbours = &mut scratch.neighbours;
         neighbours.clear();
-        // Either way the sensed robots come in ascending index: the grid's lists are sorted.
-        let mut sense = |j: usize, other: &Robot| {
-            if j != i && other.pose.p.distance_squared(me.pose.p) <= r * r {
-                neighbours.push(Neighbour {
-                    position: other.pose.p,
-                    speed: self.speeds[j],
-                    // Empty when the step does not know them (`find_slowest`).
-                    slowest_near: self.slowest.get(j).copied(),
-                });
-            }
+        // Robot `j` as sensed, and whether it is.
+        let sense = |j: usize| {
+            let position = self.robots[j].pose.p;
+            let neighbour = Neighbour {
+                position,
+                speed: self.speeds[j],
+                // Empty when the step does not know them (`find_slowest`).
+                slowest_near: self.slowest.get(j).copied(),
+            };
+            (
+                neighbour,
+                (j != i) & (position.distance_squared(me.pose.p) <= r * r),
+            )
         };
+        // Either way the sensed robots come in ascending index: the grid's lists are sorted.
         if listed {
             // Each listed robot written in the next free slot and kept by advancing the count
             // when it is sensed: no branch to mispredict (in a jam about a third of the listed
@@ -463,20 +467,17 @@ impl Simulation {
             neighbours.resize(list.len(), Neighbour::default());
             let mut count = 0;
             for &j in list {
-                let j = j as usize;
-                let q = self.robots[j].pose.p;
-                neighbours[count] = Neighbour {
-                    position: q,
-                    speed: self.speeds[j],
-                    slowest_near: self.slowest.get(j).copied(),
-                };
-                count += usize::from((j != i) & (q.distance_squared(me.pose.p) <= r * r));
+                let (neighbour, sensed) = sense(j as usize);
+                neighbours[count] = neighbour;
+                count += usize::from(sensed);
             }
             neighbours.truncate(count);
         } else if !self.independent {
-            for (j, other) in self.robots.iter().enumerate() {
-                sense(j, other);
-            }
+            neighbours.extend(
+                (0..self.robots.len())
+                    .map(sense)
+                    .filter_map(|(n, s)| s.then_some(n)),
+            );
         }
         let err = Pose {
             p: self.error_position(i),
@@ -661,8 +662,7 @@ impl Simulation {
                     .map(|(i, (((r, c), chord), speed))| {
                         *speed = r.last.command.v.abs();
                         advance(((&mut *r, c), chord));
-                        was.get(i)
-                            .is_some_and(|w| w.distance_squared(r.pose.p) <= half * half)
+                        was.get(i).is_some_and(|&w| moved_within(w, r.pose.p, half))
                     })
                     .reduce(|| true, |a, b| a && b);
                 advanced = Some(none_moved);
@@ -895,6 +895,13 @@ fn put(
 struct Scratch {
     neighbours: Vec<Neighbour>,
     constraints: safety::Constraints,
+}
+
+/// Whether a robot at `now` has moved at most `half` from `was` (see
+/// `Simulation::find_neighbours`).
+#[inline]
+fn moved_within(was: DVec2, now: DVec2, half: f64) -> bool {
+    was.distance_squared(now) <= half * half
 }
 
 /// The skin of the Verlet lists, relative to their reach (see `Simulation::find_neighbours`):
