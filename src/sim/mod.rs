@@ -867,15 +867,17 @@ fn list_reach(p: &Params, slowest_known: bool) -> f64 {
 
 /// From this many robots a step runs its passes on several threads (natively): below, rayon's
 /// hand-offs cost more than they save. Measured on `presets::crowd(n)` in open space on two
-/// cores, two threads against one: 1.11–1.16 times the time at 1,000 robots, 0.94–1.02 at
-/// 2,000, 0.73–0.75 at 4,000, 0.55–0.64 at 10,000 (README, Performance, "Two threads").
+/// cores, two threads against one: 1.11–1.16 times the time at 1,000 robots, 1.01–1.12 at
+/// 2,000, 0.62–0.65 at 4,000, 0.57–0.58 at 10,000 (README, Performance, "Two threads").
 pub const PARALLEL_FROM: usize = 2048;
 
 /// The fewest robots a thread takes at once in the step's cheap passes (integration, the
-/// slowest neighbours, storing the evaluations, the metrics): below, rayon's hand-off costs
-/// more than the work.
+/// slowest neighbours, storing the evaluations, the metrics). Small pieces let a thread that
+/// wakes late still take its share of a pass: measured at 10,000 robots, two threads against
+/// one, 0.62–0.63 with 1,024, 0.57–0.58 with 256 (0.57–0.63 with 128, 0.58 with 64); at 4,000
+/// robots 0.76–0.80 with 1,024, 0.62–0.65 with 256.
 #[cfg(not(target_arch = "wasm32"))]
-pub(crate) const CHEAP_CHUNK: usize = 1024;
+pub(crate) const CHEAP_CHUNK: usize = 256;
 
 /// Stores a robot's evaluation and the chord of its step in its slots: its state's `last`, its
 /// command and its chord.
