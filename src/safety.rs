@@ -72,10 +72,19 @@ impl SpeedLimits {
     fn keep(&mut self, u: DVec2, c: DVec2, dt: f64, budget: f64) {
         let along = u.dot(c) * dt; // d(u·Δp)/dv
         let tol = ALONG_ROUND_OFF * dt;
+        // Selects rather than `f64::min`/`max`, which are calls in wasm (to `fmin`/`fmax`, for
+        // their rule on NaN): the same bits, since no bound is NaN and each has zeros of one
+        // sign only (`hi` from `+0` budgets over positive divisors, `lo` from their negation).
         if along < -tol {
-            self.hi = self.hi.min(budget / -along);
+            let bound = budget / -along;
+            if bound < self.hi {
+                self.hi = bound;
+            }
         } else if along > tol {
-            self.lo = self.lo.max(-budget / along);
+            let bound = -budget / along;
+            if bound > self.lo {
+                self.lo = bound;
+            }
         }
     }
 

@@ -358,10 +358,16 @@ impl Simulation {
             for &m in self.near.of(n) {
                 let q = self.robots[m as usize].pose.p;
                 // Without a branch to mispredict (in a jam about half the listed robots are in
-                // the range): a robot out of it adds +∞, which changes no minimum.
+                // the range): a select, which is also one instruction in wasm, where `f64::min`
+                // is a call (to `fmin`, for its rule on NaN). The same minimum: speeds are
+                // `|v|`, never NaN nor −0.
                 let near = (q != p) & (q.distance_squared(p) <= range2);
                 let speed = self.speeds[m as usize];
-                slowest = slowest.min(if near { speed } else { f64::INFINITY });
+                slowest = if near & (speed < slowest) {
+                    speed
+                } else {
+                    slowest
+                };
             }
             slowest
         };
