@@ -94,8 +94,8 @@ test: tools lint test-native test-node test-browser test-e2e
 picture: build-wasm
 	node tests/e2e/picture.mjs
 
-# Benchmarks and their budgets, not part of `make test`: native and wasm ms per step of the crowd
-# at 1,000 and 10,000 robots (alternating, so that both see the same machine load), the drag of
+# Benchmarks and their budgets, not part of `make test`: native and wasm (Node and Chromium) ms per
+# step of the crowd at 1,000 and 10,000 robots (alternating, so that all see the same machine load), the drag of
 # one robot in the 10,000-robot crowd, and the browser's frames. `cargo bench --bench crowd` runs
 # the criterion benchmarks.
 BENCH_STEPS ?= 200
@@ -109,6 +109,7 @@ bench-native: build-wasm
 	for n in 1000 10000 1000 10000 1000 10000; do \
 		RAYON_NUM_THREADS=1 ./target/release/dvf bench --robots $$n --steps $(BENCH_STEPS) | tee -a test-results/bench-steps.jsonl; \
 		node benches/wasm.mjs --robots $$n --steps $(BENCH_STEPS) | tee -a test-results/bench-steps.jsonl; \
+		node benches/wasm-chromium.mjs --robots $$n --steps $(BENCH_STEPS) | grep '^{' | tee -a test-results/bench-steps.jsonl; \
 	done
 
 bench-wasm: build-wasm

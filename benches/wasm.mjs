@@ -1,14 +1,14 @@
 // The wasm build's counterpart of `dvf bench`: times the crowd scenario in Node and prints
 // {"robots": N, "steps": S, "obstacles": M, "ms_per_step": x}.
 //
-//   make build-wasm && node benches/wasm.mjs --robots 1000 --steps 100 [--obstacles 0] [--warmup W]
+//   make build-wasm && node benches/wasm.mjs --robots 1000 --steps 100 [--obstacles 0] [--warmup MS]
 //
-// Before the timed crowd, another crowd of the same size takes W steps (S by default), untimed:
-// V8 first runs a module in its baseline tier and compiles the functions it finds hot with its
-// optimising tier meanwhile, so that the first steps of a fresh page cost more than the rest
-// (1,000 robots, 200 steps: 0.35-0.38 ms a step cold, 0.29-0.30 with the optimising tier
-// from the start, `node --no-liftoff`). The timed crowd starts at t = 0 like the native one.
-// `--warmup 0` times the cold module.
+// Before the timed crowd, another crowd of the same size steps untimed for MS milliseconds (500
+// by default): V8 first runs a module in its baseline tier and compiles the functions it finds
+// hot with its optimising tier meanwhile, so that the first steps of a fresh page cost more than
+// the rest (1,000 robots, 200 steps: 0.35-0.38 ms a step cold, 0.29-0.30 with the optimising
+// tier from the start, `node --no-liftoff`). The timed crowd starts at t = 0 like the native
+// one. `--warmup 0` times the cold module.
 //
 // `--wasm FILE` times another build of the same crate (say, one with SIMD128) through the same
 // bindings: two builds compared in one run.
@@ -33,7 +33,7 @@ function option(name, fallback) {
 const robots = option('robots', 1000);
 const steps = option('steps', 100);
 const obstacles = option('obstacles', 0);
-const warmup = option('warmup', steps);
+const warmup = option('warmup', 500);
 
 const other = process.argv.indexOf('--wasm');
 const wasmPath =
@@ -46,7 +46,7 @@ try {
   if (warmup > 0) {
     const warm = new CrowdBench(robots, obstacles);
     try {
-      warm.step(warmup);
+      for (const until = performance.now() + warmup; performance.now() < until; ) warm.step(10);
     } finally {
       warm.free();
     }
