@@ -10,30 +10,17 @@
 // starts at t = 0. The page's clock (`performance.now`) is coarsened to 0.1 ms, a small part of
 // S steps.
 
-import { parseArgs } from 'node:util';
 import { run } from '../tests/e2e/lib.mjs';
+import { option } from './options.mjs';
 
-const { values } = parseArgs({
-  options: {
-    robots: { type: 'string', default: '1000' },
-    steps: { type: 'string', default: '100' },
-    obstacles: { type: 'string', default: '0' },
-    warmup: { type: 'string' },
-  },
-});
-/** The option `name` as a whole number; exits with a message otherwise. */
-function whole(name, text) {
-  const value = Number(text);
-  if (!Number.isInteger(value) || value < 0) {
-    console.error(`${name}: expected a whole number, not ${text}`);
-    process.exit(2);
-  }
-  return value;
+const robots = option('robots', 1000);
+const steps = option('steps', 100);
+const obstacles = option('obstacles', 0);
+const warmup = option('warmup', 500);
+if (steps < 1) {
+  console.error(`steps: must be at least 1, not ${steps}`);
+  process.exit(2);
 }
-const robots = whole('robots', values.robots);
-const steps = whole('steps', values.steps);
-const obstacles = whole('obstacles', values.obstacles);
-const warmup = whole('warmup', values.warmup ?? '500');
 
 await run(async ({ base, newPage }) => {
   const page = await newPage();

@@ -17,18 +17,7 @@ import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { performance } from 'node:perf_hooks';
 import init, { CrowdBench } from '../www/pkg/dvf.js';
-
-/** The value after `--name`, as a whole number, or `fallback`. */
-function option(name, fallback) {
-  const at = process.argv.indexOf(`--${name}`);
-  if (at < 0) return fallback;
-  const value = Number(process.argv[at + 1]);
-  if (!Number.isInteger(value) || value < 0) {
-    console.error(`${name}: expected a whole number, not ${process.argv[at + 1]}`);
-    process.exit(2);
-  }
-  return value;
-}
+import { option } from './options.mjs';
 
 const robots = option('robots', 1000);
 const steps = option('steps', 100);
