@@ -35,6 +35,11 @@ const TIME_HORIZON: f32 = 3.0;
 const OPEN_S: f64 = 2.0;
 /// Steps timed in the jam (around the middle of the crossing).
 const JAM_STEPS: usize = 200;
+/// RVO2's usual neighbourhood, ORCA's second setting: the nearest this many agents within
+/// [`RVO2_RADIUS`].
+const RVO2_NEIGHBOURS: usize = 10;
+/// RVO2's usual neighbour radius (m).
+const RVO2_RADIUS: f64 = 15.0;
 
 /// ORCA on the crowd of a scenario.
 #[derive(Clone)]
@@ -44,6 +49,8 @@ struct Orca {
     max_speed: f32,
     dt: f32,
     reach: f64,
+    /// At most this many neighbours, the nearest (RVO2's `maxNeighbors`); all when `None`.
+    nearest: Option<usize>,
     tol: f32,
     near: Neighbours,
     positions: Vec<DVec2>,
@@ -52,7 +59,13 @@ struct Orca {
 }
 
 impl Orca {
+    /// Every agent within the scenario's sensing radius as a neighbour (DVF's own setting).
     fn new(s: &Scenario) -> Self {
+        Self::within(s, s.params.sense_radius, None)
+    }
+
+    /// The agents within `reach` as neighbours, only the `nearest` ones when given.
+    fn within(s: &Scenario, reach: f64, nearest: Option<usize>) -> Self {
         let agents = s
             .robots
             .iter()
@@ -79,7 +92,8 @@ impl Orca {
             goals,
             max_speed: s.params.v_max.unwrap_or(f64::INFINITY) as f32,
             dt: s.dt as f32,
-            reach: s.params.sense_radius,
+            reach,
+            nearest,
             tol: s.params.tol_position as f32,
             near: Neighbours::new(),
             positions: Vec::new(),
@@ -111,6 +125,17 @@ impl Orca {
                     .map(|&j| self.agents[j as usize].clone()),
             );
             let a = &self.agents[i];
+            if let Some(k) = self.nearest.filter(|&k| k < self.neighbours.len()) {
+                // RVO2 keeps the nearest `maxNeighbors` (by insertion into a sorted list; the
+                // order among them does not change ORCA's answer much, and a selection costs
+                // less).
+                let p = a.position;
+                self.neighbours.select_nth_unstable_by(k, |x, y| {
+                    p.distance_squared(x.position)
+                        .total_cmp(&p.distance_squared(y.position))
+                });
+                self.neighbours.truncate(k);
+            }
             let to_goal = self.goals[i] - a.position;
             let preferred =
                 to_goal.clamp_length_max(self.max_speed.min(to_goal.length() / self.dt));
@@ -205,6 +230,14 @@ fn main() {
         let mut orca = Orca::new(&s);
         let peer = time(open, || orca.step());
         report("open", dvf, peer, String::new());
+    }
+    // Open space against ORCA in RVO2's usual setting (15 m, the nearest 10), alternating.
+    for _ in 0..3 {
+        let mut sim = serial(&s);
+        let dvf = time(open, || sim.step());
+        let mut orca = Orca::within(&s, RVO2_RADIUS, Some(RVO2_NEIGHBOURS));
+        let peer = time(open, || orca.step());
+        report("open, ORCA 15 m / nearest 10", dvf, peer, String::new());
     }
     if !only_open {
         // The jam: each planner's own crowd, run to the middle of the crossing (the circle's
