@@ -228,7 +228,9 @@ where
                 Avoidance::Exit => 1.0 - transition(to_goal, half, half),
                 Avoidance::Paper => 0.0,
             };
-            let go = 1.0 - (1.0 - go) * (1.0 - c.aside) * (1.0 - arrived);
+            // Squeezed among parked robots, a robot circles no neighbour either (Exit only,
+            // `swarm::squeezed`).
+            let go = 1.0 - (1.0 - go) * (1.0 - c.aside) * (1.0 - c.squeezed) * (1.0 - arrived);
             let side = c.at_rest.then_some(gp);
             (c.center, 1.0 - (1.0 - s) * (1.0 - go), side)
         })

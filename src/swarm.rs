@@ -48,6 +48,11 @@ pub struct Cluster {
     /// [`Avoidance::Exit`]: how far a neighbour at rest stands aside of the robot's way
     /// (0: in the way, 1: clear); the controller lets it go by as much. 0 for the paper.
     pub aside: f64,
+    /// [`Avoidance::Exit`]: how far the robot is squeezed among the robots of a parked
+    /// formation ([`squeezed`]: 1 with one of them within `SQUEEZED·2r_ij`, 0 with none
+    /// within `(SQUEEZED + ½)·2r_ij`); the controller lets the neighbour go by as much. 0 for
+    /// the paper.
+    pub squeezed: f64,
     /// [`Avoidance::Exit`]: the neighbour is at rest next to the robot (it moves at most a
     /// tenth as fast), so the robot goes round it on the side of its own field, as round an
     /// obstacle, rather than by the turn-left rule meant for two robots that both give way.
@@ -118,32 +123,42 @@ pub fn cluster(
     let all = neighbours.into_iter();
     let sensed = all.clone();
     let in_range = all.filter(move |n| within(n.position, p_i, range));
-    let (center, clearance, at_rest, aside) = match avoidance {
+    let (center, clearance, at_rest, aside, squeezed) = match avoidance {
         Avoidance::Paper => (
             virtual_obstacle(p_i, in_range.map(|n| n.position))?,
             None,
             false,
             0.0,
+            0.0,
         ),
         Avoidance::Exit => {
-            let nearest = in_range
-                .filter(|n| {
-                    let to = n.position - p_i;
-                    me.motion.dot(to) > 0.0
-                        && me.field.dot(to) > 0.0
-                        && aside(me, *n, safe) < 1.0
-                        && !in_a_parked_formation(me, *n, sensed.clone(), range)
-                })
-                .min_by(|a, b| {
-                    a.position
-                        .distance_squared(p_i)
-                        .total_cmp(&b.position.distance_squared(p_i))
-                })?;
+            // One pass: the nearest neighbour to circle, and the nearest robot of a parked
+            // formation (`squeezed`), by squared distance.
+            let mut nearest: Option<(f64, Neighbour)> = None;
+            let mut parked = f64::INFINITY;
+            for n in in_range {
+                let to = n.position - p_i;
+                let d2 = n.position.distance_squared(p_i);
+                let in_formation = in_a_parked_formation(me, n, sensed.clone(), range);
+                if in_formation && d2 < parked {
+                    parked = d2;
+                }
+                let candidate = me.motion.dot(to) > 0.0
+                    && me.field.dot(to) > 0.0
+                    && !in_formation
+                    && aside(me, n, safe) < 1.0;
+                // The first of equally near ones, as `min_by` keeps.
+                if candidate && nearest.map_or(true, |(m, _)| d2 < m) {
+                    nearest = Some((d2, n));
+                }
+            }
+            let (_, nearest) = nearest?;
             (
                 virtual_obstacle_between(p_i, me.speed, nearest),
                 Some(nearest.position.distance(p_i) - safe),
                 self::at_rest(me, nearest),
                 self::aside(me, nearest, safe),
+                self::squeezed(parked, safe),
             )
         }
     };
@@ -153,6 +168,7 @@ pub fn cluster(
         clearance,
         at_rest,
         aside,
+        squeezed,
     })
 }
 
@@ -211,6 +227,27 @@ fn in_a_parked_formation(
                     && m.position.distance_squared(n.position) <= range * range
             }),
         }
+}
+
+/// A robot closer than this many safe distances `2·r_ij` to a robot of a parked formation
+/// circles no neighbour (let go smoothly over another half safe distance, [`squeezed`]).
+pub const SQUEEZED: f64 = 2.0;
+
+/// How far a robot is squeezed among parked robots, from 0 (no robot of a parked formation,
+/// `in_a_parked_formation`, within `(SQUEEZED + ½)·safe` of it) to 1 (one within
+/// `SQUEEZED·safe`), by the transition ς of eq. `eq_switch_func` over the nearest one's
+/// distance (`nearest_parked2` its square, `+∞` for none).
+///
+/// Among the robots of a parked formation a robot cannot circle anything: the circle of its
+/// virtual obstacle runs through parked robots, the barrier stops it on the way, and the
+/// neighbour it circles changes from step to step (another robot that passes, one that makes
+/// room, none), each time turning its field round. Seen in grids of slots `3·r_ij` apart: robots
+/// spinning on the spot between parked ones for minutes (`v` up to the circling speed, `ω`
+/// 15–34 rad/s) and pairs of them circling each other across the grid. Squeezed, the robot
+/// follows its goal field, as it does past the parked robots themselves; the barrier, with its
+/// turn to the left, and the parked robots that make room ([`make_room`]) take it through.
+fn squeezed(nearest_parked2: f64, safe: f64) -> f64 {
+    1.0 - crate::obstacle::transition(nearest_parked2.sqrt(), SQUEEZED * safe, 0.5 * safe)
 }
 
 /// How far a robot at its goal steps aside for a neighbour that presses on it
@@ -498,6 +535,47 @@ mod tests {
             ..parked(4.0, 0.5)
         };
         assert!(c(&[moving, parked(4.0, 5.5)]).is_some());
+    }
+
+    /// A robot near a robot of a parked formation lets go of the moving neighbour it would
+    /// circle: wholly within `SQUEEZED` safe distances of it, not at all beyond another half;
+    /// a lone parked robot, or robots that move, squeeze nothing.
+    #[test]
+    fn squeezed_among_parked_robots_a_robot_circles_no_one() {
+        let me = eastbound();
+        let safe = 2.0;
+        let moving = Neighbour {
+            speed: 2.0,
+            ..at(4.0, 0.5)
+        };
+        // A parked robot behind the robot (never circled itself), `d` away, with another
+        // parked robot 3 m beyond it.
+        let parked = |d: f64, speed: f64| {
+            [-d, -d - 3.0].map(|x| Neighbour {
+                position: DVec2::new(x, 0.0),
+                speed,
+                slowest_near: None,
+            })
+        };
+        let squeezed = |d: f64, speed: f64, avoidance| {
+            let [a, b] = parked(d, speed);
+            cluster(me, [moving, a, b], 8.0, safe, avoidance)
+                .unwrap()
+                .squeezed
+        };
+        assert_eq!(squeezed(0.9 * SQUEEZED * safe, 0.0, Avoidance::Exit), 1.0);
+        assert_eq!(squeezed(SQUEEZED * safe, 0.0, Avoidance::Exit), 1.0);
+        let band = squeezed((SQUEEZED + 0.25) * safe, 0.0, Avoidance::Exit);
+        assert!(band > 0.0 && band < 1.0, "{band}");
+        assert_eq!(squeezed((SQUEEZED + 0.6) * safe, 0.0, Avoidance::Exit), 0.0);
+        // Parked robots that move (as fast as the robot) are no formation.
+        assert_eq!(squeezed(SQUEEZED * safe, 2.0, Avoidance::Exit), 0.0);
+        // A lone parked robot.
+        let [lone, _] = parked(SQUEEZED * safe, 0.0);
+        let c = cluster(me, [moving, lone], 8.0, safe, Avoidance::Exit).unwrap();
+        assert_eq!(c.squeezed, 0.0);
+        // The paper's avoidance has no such rule.
+        assert_eq!(squeezed(SQUEEZED * safe, 0.0, Avoidance::Paper), 0.0);
     }
 
     /// A robot steps away from a neighbour that presses on it, by at most the step in all,

@@ -455,6 +455,12 @@ mod tests {
                 .collect(),
             duration: 60.0,
             obstacles: vec![],
+            // Too slow to arrive within the horizon: the prediction ends there, not at an
+            // arrival.
+            params: crate::params::Params {
+                v_max: Some(1.0),
+                ..two().params
+            },
             ..two()
         };
         let live = Live::new(line(MAX_PREDICTED_ROBOTS)).unwrap();
