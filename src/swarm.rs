@@ -49,7 +49,7 @@ pub struct Cluster {
     /// (0: in the way, 1: clear); the controller lets it go by as much. 0 for the paper.
     pub aside: f64,
     /// [`Avoidance::Exit`]: how far the robot is squeezed among the robots of a parked
-    /// formation ([`squeezed`]: 1 with one of them within `SQUEEZED·2r_ij`, 0 with none
+    /// formation (`squeezed`: 1 with one of them within `SQUEEZED·2r_ij`, 0 with none
     /// within `(SQUEEZED + ½)·2r_ij`); the controller lets the neighbour go by as much. 0 for
     /// the paper.
     pub squeezed: f64,
@@ -230,7 +230,7 @@ fn in_a_parked_formation(
 }
 
 /// A robot closer than this many safe distances `2·r_ij` to a robot of a parked formation
-/// circles no neighbour (let go smoothly over another half safe distance, [`squeezed`]).
+/// circles no neighbour (let go smoothly over another half safe distance, `squeezed`).
 pub const SQUEEZED: f64 = 2.0;
 
 /// How far a robot is squeezed among parked robots, from 0 (no robot of a parked formation,
