@@ -1016,9 +1016,7 @@ fn a_scenario_written_by_sweep_runs_the_same_under_simulate() {
         "1",
         "--write",
     ];
-    let o = dvf(&[&args[..], &[dir.arg()]].concat());
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let summary: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let summary = dvf_json(&[&args[..], &[dir.arg()]].concat());
     // Only failing scenes are written: this one must still fail for the test to compare.
     assert_eq!(
         summary["failures"].as_array().map(Vec::len),
@@ -1026,9 +1024,7 @@ fn a_scenario_written_by_sweep_runs_the_same_under_simulate() {
         "{summary}"
     );
     let file = dir.path().join("seed-75.json");
-    let o = dvf(&["simulate", file.to_str().unwrap()]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let report: Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let report = dvf_json(&["simulate", file.to_str().unwrap()]);
     let robots = report["robots"].as_array().unwrap();
     let converged = robots
         .iter()
