@@ -34,7 +34,9 @@ use crate::field::goal_field_body;
 use crate::obstacle::{blend, goal_first, transition, Obstacle};
 use crate::params::{Avoidance, Params};
 use crate::se2::{heading, unrotate, unrotate_by, Pose};
-use crate::swarm::{cluster, make_room, pair_range, tangent_field, Approach, Neighbour, ROOM};
+use crate::swarm::{
+    cluster, make_room, pair_range, tangent_field, Approach, Neighbour, PRESSED, ROOM,
+};
 use glam::DVec2;
 
 /// Velocity inputs of a unicycle (eq. `eq_kine_nonho`).
@@ -168,7 +170,7 @@ where
     let r = params.safe_radius;
     let at_goal = 1.0 - transition(err.p.length(), r, r);
     let err = if params.avoidance == Avoidance::Exit && at_goal > 0.0 {
-        let room = at_goal * make_room(pose.p, neighbours.clone(), 2.0 * r, ROOM * r);
+        let room = at_goal * make_room(pose.p, neighbours.clone(), 2.0 * r, PRESSED * r, ROOM * r);
         Pose {
             p: err.p - unrotate(theta - err.theta, room),
             ..err

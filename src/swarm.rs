@@ -250,31 +250,47 @@ fn squeezed(nearest_parked2: f64, safe: f64) -> f64 {
     1.0 - crate::obstacle::transition(nearest_parked2.sqrt(), SQUEEZED * safe, 0.5 * safe)
 }
 
-/// How far a robot at its goal steps aside for a neighbour that presses on it
-/// ([`make_room`]), in safe radii `r_ij`; it starts to when the neighbour is closer than
-/// `2·r_ij + ½·ROOM·r_ij`.
-pub const ROOM: f64 = 1.0;
+/// How far a robot at its goal steps aside for the neighbours that press on it
+/// ([`make_room`]), in safe radii `r_ij`.
+///
+/// One `r_ij` (the gap that slots `3·r_ij` apart leave between two safe discs, so that two
+/// robots parting by it each would open a lane) was not enough once a robot squeezed among
+/// parked ones stopped circling ([`SQUEEZED`]): the robot that presses comes at the gap
+/// obliquely, closer to one of the two than to the other, and only the nearer one steps aside.
+/// Seen at spacing 3–3.5: a robot held on the safe disc of a parked robot that had stepped its
+/// whole `r_ij`, with the other robot of the gap just out of reach of its pressing, the lane
+/// between them 0.04·r_ij short, and the barrier's left turn balancing the turn to the field.
+pub const ROOM: f64 = 1.5;
+
+/// A neighbour closer than this many safe radii `r_ij` presses on a robot at its goal
+/// ([`make_room`]); one on the safe distance `2·r_ij` presses it its whole [`ROOM`].
+/// Starting at `2·r_ij + ROOM·r_ij/2` = 2.75 (half the step beyond the safe distance, as with
+/// a step of one `r_ij`) took as many robots into the formations and left more of the dense
+/// random scenes outside their slots (README, Notes on the paper, formations).
+pub const PRESSED: f64 = 2.6;
 
 /// Where a robot at its goal moves its goal to make room for the neighbours that press on it:
-/// away from each neighbour closer than `safe + step/2`, by the transition ς of eq.
-/// `eq_switch_func` (1 at `safe`, 0 at `safe + step/2`), at most `step` in all. The robot
-/// steps aside while a neighbour presses on it and returns to its slot and heading once the
-/// neighbour has gone: slots closer together than a robot can pass between (`3·r_ij`: the gap
-/// between two safe discs is one `r_ij`) open up, the robot that presses is let through, and
-/// neighbours parked `safe + step/2` apart or more leave each other alone. Decentralised: the
-/// positions the robot senses are all it needs.
+/// away from each neighbour closer than `reach`, by the transition ς of eq. `eq_switch_func`
+/// (1 at `safe`, 0 at `reach`), at most `step` in all. The robot steps aside while a
+/// neighbour presses on it and returns to its slot and heading once the neighbour has gone:
+/// slots closer together than a robot can pass between (`3·r_ij`: the gap between two safe
+/// discs is one `r_ij`) open up, the robot that presses is let through, and neighbours parked
+/// `reach` apart or more leave each other alone. Decentralised: the positions the robot
+/// senses are all it needs.
 #[must_use]
 pub fn make_room(
     p_i: DVec2,
     neighbours: impl IntoIterator<Item = Neighbour>,
     safe: f64,
+    reach: f64,
     step: f64,
 ) -> DVec2 {
     let push: DVec2 = neighbours
         .into_iter()
         .map(|n| {
             let away = (p_i - n.position).normalize_or_zero();
-            (1.0 - crate::obstacle::transition(p_i.distance(n.position), safe, 0.5 * step)) * away
+            let d = p_i.distance(n.position);
+            (1.0 - crate::obstacle::transition(d, safe, reach - safe)) * away
         })
         .sum();
     step * push.clamp_length_max(1.0)
@@ -579,19 +595,20 @@ mod tests {
     }
 
     /// A robot steps away from a neighbour that presses on it, by at most the step in all,
-    /// and leaves alone the neighbours `safe + step/2` away or more.
+    /// and leaves alone the neighbours `reach` away or more.
     #[test]
     fn a_robot_makes_room_for_a_neighbour_that_presses_on_it() {
-        let (safe, step) = (2.0, 1.0);
-        let room = |ns: &[Neighbour]| make_room(DVec2::ZERO, ns.iter().copied(), safe, step);
-        assert_eq!(room(&[at(-2.0, 0.0)]), DVec2::new(1.0, 0.0));
-        assert_eq!(room(&[at(0.0, 2.5)]), DVec2::ZERO);
+        let (safe, reach, step) = (2.0, PRESSED, ROOM);
+        let room = |ns: &[Neighbour]| make_room(DVec2::ZERO, ns.iter().copied(), safe, reach, step);
+        assert_eq!(room(&[at(-2.0, 0.0)]), DVec2::new(ROOM, 0.0));
+        assert_eq!(room(&[at(0.0, PRESSED)]), DVec2::ZERO);
         assert_eq!(room(&[at(3.0, 0.0), at(0.0, -9.0)]), DVec2::ZERO);
-        let between = room(&[at(2.25, 0.0)]);
-        assert!(between.x < 0.0 && between.x > -1.0 && between.y == 0.0);
+        let between = room(&[at(2.3, 0.0)]);
+        assert!(between.x < 0.0 && between.x > -ROOM && between.y == 0.0);
         // Pressed from two sides at once: still at most one step.
         let both = room(&[at(-2.0, 0.0), at(0.0, -2.0)]);
-        assert_close!(both.length(), 1.0, 1e-15);
+        // One rounding of the length of (step/√2, step/√2).
+        assert_close!(both.length(), ROOM, 1e-15);
         assert_close!(both.x, both.y, 1e-15);
     }
 
