@@ -85,6 +85,12 @@ pub struct Approach {
 
 impl Approach {
     /// Its goal position, `p − R(θ_d)·err.p`.
+    ///
+    /// Not inlined: inlined, its sine and cosine are intrinsics the compiler may take
+    /// speculatively, and it took them before the loop of [`cluster`] over the neighbours, for
+    /// every robot with a neighbour in range, at rest or not (0.9 per robot-step in the crowd
+    /// of 1,000, where a neighbour at rest is rare). A call it cannot move.
+    #[inline(never)]
     #[must_use]
     pub fn goal(&self) -> DVec2 {
         self.position - crate::se2::rotate(self.goal_attitude, self.goal_error)
@@ -305,7 +311,16 @@ fn at_rest(me: Approach, n: Neighbour) -> bool {
 
 /// Whether a robot moving at `speed` is at rest next to the robot `me`.
 fn at_rest_at(me: Approach, speed: f64) -> bool {
-    speed + SPEED_FLOOR <= AT_REST_RATIO * (me.speed + SPEED_FLOOR)
+    at_rest_beside(speed, me.speed)
+}
+
+/// Whether a robot moving at `speed` is at rest next to one moving at `beside` (its
+/// [`Approach::speed`]). Monotone in `beside` (floating-point sums and products are), so a
+/// robot that is not at rest beside the fastest is at rest beside none.
+#[inline]
+#[must_use]
+pub fn at_rest_beside(speed: f64, beside: f64) -> bool {
+    speed + SPEED_FLOOR <= AT_REST_RATIO * (beside + SPEED_FLOOR)
 }
 
 /// How far a neighbour at rest stands aside of the straight way to the goal, as a transition
