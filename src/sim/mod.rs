@@ -41,7 +41,7 @@ use crate::scenario::Scenario;
 use crate::se2::{continue_branch, wrap_angle, Pose};
 #[cfg(not(target_arch = "wasm32"))]
 use crate::se2::{heading, unrotate_by};
-use crate::swarm::{cluster_reach, pair_range, Neighbour};
+use crate::swarm::{at_rest_beside, cluster_reach, pair_range, Neighbour};
 use crate::unicycle::integrate_along;
 use crate::Command;
 use glam::DVec2;
@@ -346,13 +346,26 @@ impl Simulation {
     /// range, every robot within the range of a neighbour within the range is sensed. The
     /// deciding robot itself may be the slowest, which changes nothing: it is never at rest
     /// next to itself (`swarm::AT_REST_RATIO` < 1), nor is any robot at least as fast.
+    ///
+    /// A robot's slowest neighbour is read only when that robot is at rest beside the robot
+    /// deciding (`swarm::in_a_parked_formation`), and a robot deciding moves at most as fast
+    /// as the fastest robot, or at the circling speed `v_c` on an obstacle's surface
+    /// (`Approach::speed`): the robots not at rest beside the faster of those two are given
+    /// `+∞` without a search, which nothing reads. In open space that is every robot.
     fn find_slowest(&mut self) {
         if !self.slowest_known {
             return;
         }
         let range = pair_range(self.params.avoid_radius, self.params.transition_width);
         let range2 = range * range;
+        let fastest = self
+            .speeds
+            .iter()
+            .fold(self.params.avoid_speed, |m, &s| if s > m { s } else { m });
         let slowest = |n: usize| {
+            if !at_rest_beside(self.speeds[n], fastest) {
+                return f64::INFINITY;
+            }
             let p = self.robots[n].pose.p;
             let mut slowest = f64::INFINITY;
             for &m in self.near.of(n) {
