@@ -158,9 +158,28 @@ where
     I: IntoIterator<Item = &'a Obstacle>,
     I::IntoIter: Clone,
 {
+    let h = heading(pose.theta);
+    evaluate_facing(params, pose, h, err, speed, obstacles, neighbours)
+}
+
+/// [`evaluate`] with the heading `h = (cos θ, sin θ)` of `pose` ([`heading`]) taken by the
+/// caller, who needs it again for the safety barrier ([`crate::safety::filter_facing`]): a
+/// step takes the heading's sine and cosine once per robot.
+#[must_use]
+pub fn evaluate_facing<'a, I>(
+    params: &Params,
+    pose: Pose,
+    h: DVec2,
+    err: Pose,
+    speed: f64,
+    obstacles: I,
+    neighbours: impl IntoIterator<Item = Neighbour, IntoIter: Clone>,
+) -> Evaluation
+where
+    I: IntoIterator<Item = &'a Obstacle>,
+    I::IntoIter: Clone,
+{
     let theta = pose.theta;
-    // The heading's sine and cosine, once for every rotation by θ below.
-    let h = heading(theta);
     let eps = params.transition_width;
     let neighbours = neighbours.into_iter();
     // A robot at its goal (within r_ij, let go smoothly by 2·r_ij) makes room for the
@@ -241,7 +260,7 @@ where
     let gp_body = unrotate_by(h, gp);
     let (field, v, delta, keep_c) = match avoiding {
         Some((o, keep_c, side)) => {
-            let t = tangent_field(pose.p, theta, o, side);
+            let t = tangent_field(pose.p, h, o, side);
             let field = keep_c * gp + (1.0 - keep_c) * t;
             let fb = unrotate_by(h, field);
             let v = params.k_v * keep_c * gp_body.x + (1.0 - keep_c) * params.avoid_speed;

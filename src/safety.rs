@@ -5,7 +5,7 @@
 //!
 //! It is a discrete-time barrier on distances. Over one step of `dt` robot `i` moves by the
 //! chord `Δp_i = v_i·dt·c_i` of its arc (`c_i = sinc(ω_i dt/2)·(cos, sin)(θ_i + ω_i dt/2)`,
-//! see [`chord`]). For a pair at distance `d` along the unit vector
+//! see [`crate::unicycle::chord`]). For a pair at distance `d` along the unit vector
 //! `u = (p_i − p_j)/d`,
 //!
 //! ```text
@@ -27,8 +27,8 @@
 use crate::controller::Command;
 use crate::obstacle::Obstacle;
 use crate::params::Params;
-use crate::se2::Pose;
-use crate::unicycle::chord;
+use crate::se2::{heading, Pose};
+use crate::unicycle::chord_from;
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
 
@@ -204,12 +204,42 @@ pub fn filter<'a>(
     neighbours: impl IntoIterator<Item = DVec2>,
     obstacles: impl IntoIterator<Item = &'a Obstacle>,
 ) -> (Command, DVec2) {
+    let h = heading(pose.theta);
+    filter_facing(
+        constraints,
+        params,
+        dt,
+        pose.p,
+        h,
+        c,
+        field,
+        neighbours,
+        obstacles,
+    )
+}
+
+/// [`filter`] of a robot at `p` with the heading `h = (cos θ, sin θ)` its controller has taken
+/// already ([`crate::controller::evaluate_facing`]): the same command, and no sine or cosine
+/// of its own.
+#[must_use]
+#[allow(clippy::too_many_arguments)]
+pub fn filter_facing<'a>(
+    constraints: &mut Constraints,
+    params: &Params,
+    dt: f64,
+    p: DVec2,
+    h: DVec2,
+    c: Command,
+    field: DVec2,
+    neighbours: impl IntoIterator<Item = DVec2>,
+    obstacles: impl IntoIterator<Item = &'a Obstacle>,
+) -> (Command, DVec2) {
     let Some(rate) = params.barrier_rate else {
-        return (c, chord(pose.theta, c.omega, dt));
+        return (c, chord_from(h, c.omega, dt));
     };
     let safe = 2.0 * params.safe_radius;
-    constraints.derive(pose.p, rate * dt, safe, neighbours, obstacles);
-    steer(params, dt, pose, c, field, |direction| {
+    constraints.derive(p, rate * dt, safe, neighbours, obstacles);
+    steer(params, dt, h, c, field, |direction| {
         constraints.limits(direction, dt)
     })
 }
@@ -265,7 +295,7 @@ impl Constraints {
 fn steer(
     params: &Params,
     dt: f64,
-    pose: Pose,
+    h: DVec2,
     c: Command,
     field: DVec2,
     limits: impl Fn(DVec2) -> SpeedLimits,
@@ -277,7 +307,7 @@ fn steer(
     };
     let turned = c.omega + params.k_a * held * FRAC_PI_2;
     let omega = params.omega_max.map_or(turned, |m| turned.clamp(-m, m));
-    let step = chord(pose.theta, omega, dt);
+    let step = chord_from(h, omega, dt);
     let v = limits(step).clamp(c.v);
     (Command { v, omega }, step)
 }
@@ -287,7 +317,7 @@ mod tests {
     use super::*;
     use crate::se2::heading;
     use crate::testing::{assert_close, test, XorShift};
-    use crate::unicycle::integrate;
+    use crate::unicycle::{chord, integrate};
 
     /// The constraints derived once give the same bits as deriving them for each direction
     /// ([`speed_limits`], the definition).

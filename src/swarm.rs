@@ -10,7 +10,6 @@
 //! motion or its field no longer leads to that neighbour ([`cluster`]).
 
 use crate::params::Avoidance;
-use crate::se2::heading;
 use glam::DVec2;
 
 /// Speeds are compared with this floor added (m/s), so that two robots at rest share their
@@ -382,10 +381,11 @@ pub fn pair_range(avoid_radius: f64, eps: f64) -> f64 {
     2.0 * (avoid_radius + eps)
 }
 
-/// `Γ_ri⊥` of eq. `eq_Gamma_r_perp_co_avoid` for a robot at `p_i` with attitude `theta`
-/// circling the virtual obstacle `p_o`: perpendicular to `Γ_ri = p_i − p̃_o`
+/// `Γ_ri⊥` of eq. `eq_Gamma_r_perp_co_avoid` for a robot at `p_i` with attitude `θ`, given as
+/// its heading `e = (cos θ, sin θ)` ([`crate::se2::heading`], which the controller has taken
+/// already), circling the virtual obstacle `p_o`: perpendicular to `Γ_ri = p_i − p̃_o`
 /// (eq. `eq_Gamma_r_co_avoid`), of the same length, with a positive projection on the body Y
-/// axis `R(π/2)(cos θ, sin θ)`.
+/// axis `R(π/2)e`.
 ///
 /// The paper leaves the case of a zero projection open (the robot's heading already tangent);
 /// here the robot then keeps the tangent along its heading.
@@ -394,7 +394,7 @@ pub fn pair_range(avoid_radius: f64, eps: f64) -> f64 {
 /// rule of the obstacle field, for a neighbour at rest), the paper's rule on a tie.
 #[inline]
 #[must_use]
-pub fn tangent_field(p_i: DVec2, theta: f64, p_o: DVec2, side: Option<DVec2>) -> DVec2 {
+pub fn tangent_field(p_i: DVec2, e: DVec2, p_o: DVec2, side: Option<DVec2>) -> DVec2 {
     let gamma_r = p_i - p_o;
     let ccw = gamma_r.perp(); // R(π/2)Γ_ri
     if let Some(toward) = side {
@@ -403,7 +403,6 @@ pub fn tangent_field(p_i: DVec2, theta: f64, p_o: DVec2, side: Option<DVec2>) ->
             return s.signum() * ccw;
         }
     }
-    let e = heading(theta);
     // ⟨σ R(π/2)Γ, R(π/2)e⟩ = σ⟨Γ, e⟩.
     let s = gamma_r.dot(e);
     if s > 0.0 || (s == 0.0 && ccw.dot(e) >= 0.0) {
@@ -416,6 +415,7 @@ pub fn tangent_field(p_i: DVec2, theta: f64, p_o: DVec2, side: Option<DVec2>) ->
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::se2::heading;
     use crate::testing::assert_close;
     use crate::testing::test;
     use std::f64::consts::{FRAC_PI_2, PI};
@@ -673,8 +673,8 @@ mod tests {
         let pi = DVec2::new(-2.0, 0.0);
         let pj = DVec2::new(2.0, 0.0);
         let o = virtual_obstacle(pi, [pj]).unwrap();
-        let gi = tangent_field(pi, 0.0, o, None);
-        let gj = tangent_field(pj, PI, o, None);
+        let gi = tangent_field(pi, heading(0.0), o, None);
+        let gj = tangent_field(pj, heading(PI), o, None);
         // Positive projection on each body Y axis.
         assert!(gi.dot(heading(FRAC_PI_2)) > 0.0);
         assert!(gj.dot(heading(PI + FRAC_PI_2)) > 0.0);
@@ -688,7 +688,7 @@ mod tests {
         for k in 0..24 {
             let t = k as f64 * 0.27;
             let p = DVec2::new(1.0, 2.0);
-            let g = tangent_field(p, t, DVec2::new(-0.5, 0.3), None);
+            let g = tangent_field(p, heading(t), DVec2::new(-0.5, 0.3), None);
             assert_close!(g.dot(p - DVec2::new(-0.5, 0.3)), 0.0, 1e-12);
             assert!(g.dot(heading(t + FRAC_PI_2)) >= 0.0);
         }

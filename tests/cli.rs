@@ -999,8 +999,8 @@ fn a_sweep_is_the_same_on_one_thread_and_on_many() {
 
 /// A scenario that `dvf sweep --write` saved runs the same under `dvf simulate`: its JSON
 /// numbers read back to the very bits the sweep ran (scene 19 of the narrowest formations,
-/// which the sweep leaves 4 of its 21 robots short, the last to arrive at 145.89 s; read a
-/// unit in the last place off, all 21 arrived under `simulate`, the last at 94.54 s. Scene 75,
+/// which the sweep leaves 4 of its 21 robots short, the last to arrive at 145.9 s; read a
+/// unit in the last place off, all 21 arrived under `simulate`, the last at 101.08 s. Scene 75,
 /// the first chosen, fails no more since parked robots step aside `2·r_ij`).
 #[test]
 fn a_scenario_written_by_sweep_runs_the_same_under_simulate() {

@@ -53,6 +53,9 @@ pub(super) struct Observed<'a> {
     pub reach: f64,
     /// The reach of `near`'s lists (at least `2·r_ij`).
     pub list_reach: f64,
+    // The closest listed pair's squared distance within `list_reach` (the pairs
+    // `closest_listed2` visits), when the step's evaluations found it on their way.
+    pub closest2: Option<f64>,
     /// Whether the passes over the robots run on rayon's threads (native only).
     #[cfg(not(target_arch = "wasm32"))]
     pub threaded: bool,
@@ -104,9 +107,10 @@ impl Metrics {
         let quick: Option<(Option<f64>, bool)> = None;
         // On one thread, the closest listed pair found on the way, as on threads.
         let listed = !o.independent && o.neighbourhood == Neighbourhood::Grid;
-        let mut closest2 = f64::INFINITY;
+        let search = listed && o.closest2.is_none();
+        let mut closest2 = o.closest2.unwrap_or(f64::INFINITY);
         for (i, r) in o.robots.iter().enumerate().filter(|_| quick.is_none()) {
-            if listed {
+            if search {
                 closest2 = closest2.min(closest_listed2(o, i));
             }
             let at_position = r.position_error() <= p.tol_position;
@@ -224,7 +228,11 @@ impl Metrics {
                     }
                     inside_a_disc |= c < 0.0;
                 }
-                (closest, inside_a_disc, closest_listed2(o, i))
+                let closest2 = match o.closest2 {
+                    Some(_) => f64::INFINITY,
+                    None => closest_listed2(o, i),
+                };
+                (closest, inside_a_disc, closest2)
             })
             .reduce(
                 || (f64::INFINITY, false, f64::INFINITY),
@@ -243,6 +251,7 @@ impl Metrics {
                 }
             }
         }
+        let closest2 = o.closest2.map_or(closest2, |known| known.min(closest2));
         closest_pair(closest2, 2.0 * p.safe_radius)
     }
 }

@@ -32,15 +32,15 @@ pub mod smoothness;
 pub use report::{Report, RobotReport};
 pub use run::{run, run_recorded, run_with, Sample};
 
-use crate::controller::{evaluate, Evaluation};
+use crate::controller::{evaluate_facing, Evaluation};
 use crate::grid::{Neighbours, ObstacleCells};
 use crate::obstacle::Obstacle;
 use crate::params::{Avoidance, Params};
 use crate::safety;
 use crate::scenario::Scenario;
-use crate::se2::{continue_branch, wrap_angle, Pose};
 #[cfg(not(target_arch = "wasm32"))]
-use crate::se2::{heading, unrotate_by};
+use crate::se2::unrotate_by;
+use crate::se2::{continue_branch, heading, wrap_angle, Pose};
 use crate::swarm::{at_rest_beside, cluster_reach, pair_range, Neighbour};
 use crate::unicycle::integrate_along;
 use crate::Command;
@@ -124,6 +124,11 @@ pub struct Simulation {
     // Per robot, the smallest speed of the robots within the avoidance range of it (at
     // another position), +∞ for none; empty unless `slowest_known`.
     slowest: Vec<f64>,
+    // The smallest squared distance between two listed robots within the lists' reach, as the
+    // evaluations of the last `evaluate_all` found it on their way (`+∞` for none), for the
+    // metrics' closest pair; `None` when they did not see the whole reach (`R_s` shorter
+    // than it) or an edit has evaluated some robots since.
+    closest2: Option<f64>,
     scratch: Scratch,
     // The parallel step (native only): whether it is on, its buffers (one per chunk), and the
     // evaluations before they are stored.
@@ -180,6 +185,7 @@ impl Simulation {
             reach: list_reach(&s.params, slowest_known),
             slowest_known,
             slowest: Vec::new(),
+            closest2: None,
             scratch: Scratch::default(),
             #[cfg(not(target_arch = "wasm32"))]
             parallel: true,
@@ -416,13 +422,30 @@ impl Simulation {
         }
         self.find_neighbours(advanced);
         self.find_slowest();
+        self.scratch.closest2 = f64::INFINITY;
         #[cfg(not(target_arch = "wasm32"))]
-        if self.evaluate_in_parallel() {
-            return;
+        let parallel = self.evaluate_in_parallel();
+        #[cfg(target_arch = "wasm32")]
+        let parallel = false;
+        if !parallel {
+            for i in 0..self.robots.len() {
+                self.evaluate_robot(i);
+            }
         }
-        for i in 0..self.robots.len() {
-            self.evaluate_robot(i);
-        }
+        #[cfg(not(target_arch = "wasm32"))]
+        let closest2 = if parallel {
+            self.scratches
+                .iter()
+                .fold(f64::INFINITY, |m, s| m.min(s.closest2))
+        } else {
+            self.scratch.closest2
+        };
+        #[cfg(target_arch = "wasm32")]
+        let closest2 = self.scratch.closest2;
+        // The evaluations saw every listed pair within the lists' reach when their sensing
+        // radius is at least that reach (`evaluation`).
+        self.closest2 =
+            (self.listed() && self.reach <= self.params.sense_radius).then_some(closest2);
     }
 
     /// Robot `i`'s command from what it senses now, into `last`/`commands` (see
@@ -460,10 +483,11 @@ impl Simulation {
         // The grid's lists hold the robots within their reach: when that is at most the sensing
         // radius, they are the sensed robots that can change the command (see `reach`).
         let r = if listed { self.reach.min(rs) } else { rs };
+        let r2 = r * r;
         let me = self.robots[i];
         let neighbours = &mut scratch.neighbours;
         neighbours.clear();
-        // Robot `j` as sensed, and whether it is.
+        // Robot `j` as sensed, whether it is, and its squared distance.
         let sense = |j: usize| {
             let position = self.robots[j].pose.p;
             let neighbour = Neighbour {
@@ -472,47 +496,57 @@ impl Simulation {
                 // Empty when the step does not know them (`find_slowest`).
                 slowest_near: self.slowest.get(j).copied(),
             };
-            (
-                neighbour,
-                (j != i) & (position.distance_squared(me.pose.p) <= r * r),
-            )
+            let d2 = position.distance_squared(me.pose.p);
+            (neighbour, (j != i) & (d2 <= r2), d2)
         };
         // Either way the sensed robots come in ascending index: the grid's lists are sorted.
         if listed {
             // Each listed robot written in the next free slot and kept by advancing the count
             // when it is sensed: no branch to mispredict (in a jam about a third of the listed
             // robots lie in the lists' skin).
+            // On the way, the closest listed robot of higher index: the metrics' closest pair
+            // (a select, as in `find_slowest`).
             let list = self.near.of(i);
             neighbours.resize(list.len(), Neighbour::default());
             let mut count = 0;
+            let mut closest2 = scratch.closest2;
             for &j in list {
-                let (neighbour, sensed) = sense(j as usize);
+                let (neighbour, sensed, d2) = sense(j as usize);
                 neighbours[count] = neighbour;
                 count += usize::from(sensed);
+                closest2 = if (j as usize > i) & sensed & (d2 < closest2) {
+                    d2
+                } else {
+                    closest2
+                };
             }
             neighbours.truncate(count);
+            scratch.closest2 = closest2;
         } else if !self.independent {
             neighbours.extend(
                 (0..self.robots.len())
                     .map(sense)
-                    .filter_map(|(n, s)| s.then_some(n)),
+                    .filter_map(|(n, s, _)| s.then_some(n)),
             );
         }
         let err = Pose {
             p: self.error_position(i),
             theta: me.heading_error,
         };
-        let mut e = self.evaluate_at(me.pose, err, self.speeds[i], neighbours);
+        // The heading's sine and cosine, once for the controller and the barrier.
+        let h = heading(me.pose.theta);
+        let mut e = self.evaluate_facing(me.pose, h, err, self.speeds[i], neighbours);
         let sensed = sensed_obstacles(&self.obstacles, &self.obstacle_cells, me.pose.p, rs);
         // The neighbours the barrier can bind on at this speed (the others change nothing).
         let binding = safety::neighbour_reach(&self.params, e.command.v);
         let binding2 = binding * binding;
         let chord;
-        (e.command, chord) = safety::filter(
+        (e.command, chord) = safety::filter_facing(
             &mut scratch.constraints,
             &self.params,
             self.dt,
-            me.pose,
+            me.pose.p,
+            h,
             e.command,
             e.field,
             neighbours
@@ -553,6 +587,9 @@ impl Simulation {
         out.resize(n, (Evaluation::default(), DVec2::ZERO));
         let mut scratches = std::mem::take(&mut self.scratches);
         scratches.resize_with(chunks, Scratch::default);
+        for s in &mut scratches {
+            s.closest2 = f64::INFINITY;
+        }
         let this = &*self;
         out.par_chunks_mut(size)
             .zip(scratches.par_iter_mut())
@@ -601,11 +638,11 @@ impl Simulation {
         }
     }
 
-    /// The controller ([`evaluate`]) of a robot at `pose` with error `err` (to its goal) and
+    /// The controller ([`crate::controller::evaluate`]) of a robot at `pose` with error `err` (to its goal) and
     /// speed `speed`, among the obstacles within `R_s` of it and the sensed `neighbours`: what
     /// a step computes for each robot, and what the playground samples as the field around one.
     /// One function for both, so that the controller is compiled once into the wasm module.
-    #[inline(never)]
+    #[inline]
     #[must_use]
     pub fn evaluate_at(
         &self,
@@ -614,10 +651,25 @@ impl Simulation {
         speed: f64,
         neighbours: &[Neighbour],
     ) -> Evaluation {
+        self.evaluate_facing(pose, heading(pose.theta), err, speed, neighbours)
+    }
+
+    /// [`Self::evaluate_at`] with the heading `h` of `pose` taken by the caller
+    /// ([`evaluate_facing`]).
+    #[inline(never)]
+    fn evaluate_facing(
+        &self,
+        pose: Pose,
+        h: DVec2,
+        err: Pose,
+        speed: f64,
+        neighbours: &[Neighbour],
+    ) -> Evaluation {
         let rs = self.params.sense_radius;
-        evaluate(
+        evaluate_facing(
             &self.params,
             pose,
+            h,
             err,
             speed,
             sensed_obstacles(&self.obstacles, &self.obstacle_cells, pose.p, rs),
@@ -714,6 +766,7 @@ impl Simulation {
             near: &self.near,
             reach,
             list_reach,
+            closest2: self.closest2,
             #[cfg(not(target_arch = "wasm32"))]
             threaded: self.threaded(),
         });
@@ -806,6 +859,8 @@ impl Simulation {
 
     /// The metrics of a simulation that has taken no step, observed again from scratch.
     fn observe_again(&mut self) {
+        // Only some robots were evaluated again: the metrics search the lists themselves.
+        self.closest2 = None;
         self.metrics.clear();
         self.observe();
     }
@@ -911,11 +966,14 @@ fn put(
 }
 
 /// A robot evaluation's buffers, reused from robot to robot: its sensed neighbours and the
-/// barrier's constraints.
+/// barrier's constraints; and the smallest squared distance from a robot evaluated with them
+/// to a listed robot of higher index within the lists' reach (`+∞` for none), for the metrics'
+/// closest pair (`Simulation::closest_listed2`).
 #[derive(Clone, Debug, Default)]
 struct Scratch {
     neighbours: Vec<Neighbour>,
     constraints: safety::Constraints,
+    closest2: f64,
 }
 
 /// Whether a robot at `now` has moved at most `half` from `was` (see
