@@ -105,7 +105,8 @@ impl Metrics {
         let quick = o.threaded.then(|| self.observe_in_parallel(o));
         #[cfg(target_arch = "wasm32")]
         let quick: Option<(Option<f64>, bool)> = None;
-        // On one thread, the closest listed pair found on the way, as on threads.
+        // On one thread, the closest listed pair as the step's evaluations found it, or else
+        // found on the way, as on threads.
         let listed = !o.independent && o.neighbourhood == Neighbourhood::Grid;
         let search = listed && o.closest2.is_none();
         let mut closest2 = o.closest2.unwrap_or(f64::INFINITY);

@@ -638,10 +638,11 @@ impl Simulation {
         }
     }
 
-    /// The controller ([`crate::controller::evaluate`]) of a robot at `pose` with error `err` (to its goal) and
-    /// speed `speed`, among the obstacles within `R_s` of it and the sensed `neighbours`: what
-    /// a step computes for each robot, and what the playground samples as the field around one.
-    /// One function for both, so that the controller is compiled once into the wasm module.
+    /// The controller ([`crate::controller::evaluate`]) of a robot at `pose` with error `err`
+    /// (to its goal) and speed `speed`, among the obstacles within `R_s` of it and the sensed
+    /// `neighbours`: what a step computes for each robot, and what the playground samples as
+    /// the field around one. One function for both (through `evaluate_facing`), so that the
+    /// controller is compiled once into the wasm module.
     #[inline]
     #[must_use]
     pub fn evaluate_at(
