@@ -27,6 +27,9 @@ pub mod playground;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
 
+// Selects without a branch, for the hot loops.
+mod select;
+
 #[cfg(test)]
 mod testing;
 

@@ -72,20 +72,24 @@ impl SpeedLimits {
     fn keep(&mut self, u: DVec2, c: DVec2, dt: f64, budget: f64) {
         let along = u.dot(c) * dt; // d(u·Δp)/dv
         let tol = ALONG_ROUND_OFF * dt;
-        // Selects rather than `f64::min`/`max`, which are calls in wasm (to `fmin`/`fmax`, for
-        // their rule on NaN): the same bits, since no bound is NaN and each has zeros of one
-        // sign only (`hi` from `+0` budgets over positive divisors, `lo` from their negation).
-        if along < -tol {
-            let bound = budget / -along;
-            if bound < self.hi {
-                self.hi = bound;
-            }
-        } else if along > tol {
-            let bound = -budget / along;
-            if bound > self.lo {
-                self.lo = bound;
-            }
-        }
+        // The bound `budget / −along` on one side and `−budget / along` on the other are both
+        // `−(budget / along)`, bit for bit (a division rounds its magnitude alike whatever the
+        // signs). Taken either way and kept by selects, without a branch to mispredict (which
+        // side a neighbour bounds is a coin toss in a crowd); selects rather than
+        // `f64::min`/`max`, which are calls in wasm (to `fmin`/`fmax`, for their rule on NaN):
+        // the same bits, since a bound kept is never NaN and each side has zeros of one sign
+        // only (`hi` from `+0` budgets over positive divisors, `lo` from their negation).
+        let bound = -(budget / along);
+        self.hi = if (along < -tol) & (bound < self.hi) {
+            bound
+        } else {
+            self.hi
+        };
+        self.lo = if (along > tol) & (bound > self.lo) {
+            bound
+        } else {
+            self.lo
+        };
     }
 
     /// `v` clamped into the limits.

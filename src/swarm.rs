@@ -10,6 +10,7 @@
 //! motion or its field no longer leads to that neighbour ([`cluster`]).
 
 use crate::params::Avoidance;
+use crate::select::{pick, pick2};
 use glam::DVec2;
 
 /// Speeds are compared with this floor added (m/s), so that two robots at rest share their
@@ -139,25 +140,36 @@ pub fn cluster(
         Avoidance::Exit => {
             // One pass: the nearest neighbour to circle, and the nearest robot of a parked
             // formation (`squeezed`), by squared distance.
-            let mut nearest: Option<(f64, Neighbour)> = None;
+            // By selects, without a branch to mispredict: whether a neighbour is ahead is a
+            // coin toss in a crowd, and so is whether it is the nearest so far. `aside` and
+            // `in_a_parked_formation` are cheap for a neighbour that moves (the usual case),
+            // so they are taken for every neighbour. By `pick`: plain selects on one
+            // condition were compiled into a branch.
+            let (mut nearest2, mut nearest) = (f64::INFINITY, Neighbour::default());
             let mut parked = f64::INFINITY;
             for n in in_range {
                 let to = n.position - p_i;
                 let d2 = n.position.distance_squared(p_i);
                 let in_formation = in_a_parked_formation(me, n, sensed.clone(), range);
-                if in_formation && d2 < parked {
-                    parked = d2;
-                }
-                let candidate = me.motion.dot(to) > 0.0
-                    && me.field.dot(to) > 0.0
-                    && !in_formation
-                    && aside(me, n, safe) < 1.0;
-                // The first of equally near ones, as `min_by` keeps.
-                if candidate && nearest.map_or(true, |(m, _)| d2 < m) {
-                    nearest = Some((d2, n));
-                }
+                parked = if in_formation & (d2 < parked) {
+                    d2
+                } else {
+                    parked
+                };
+                let candidate = (me.motion.dot(to) > 0.0)
+                    & (me.field.dot(to) > 0.0)
+                    & !in_formation
+                    & (aside(me, n, safe) < 1.0);
+                // The first of equally near ones, as `min_by` keeps. A candidate is in range,
+                // so its squared distance is finite: `+∞` left means none.
+                let take = candidate & (d2 < nearest2);
+                nearest2 = pick(take, d2, nearest2);
+                nearest.position = pick2(take, n.position, nearest.position);
+                nearest.speed = pick(take, n.speed, nearest.speed);
             }
-            let (_, nearest) = nearest?;
+            if nearest2 == f64::INFINITY {
+                return None;
+            }
             (
                 virtual_obstacle_between(p_i, me.speed, nearest),
                 Some(nearest.position.distance(p_i) - safe),

@@ -504,24 +504,26 @@ impl Simulation {
             // Each listed robot written in the next free slot and kept by advancing the count
             // when it is sensed: no branch to mispredict (in a jam about a third of the listed
             // robots lie in the lists' skin).
-            // On the way, the closest listed robot of higher index: the metrics' closest pair
-            // (a select, as in `find_slowest`).
+            // On the way, the closest listed robot of higher index, for the metrics' closest
+            // pair. The nearest of those robots is sensed exactly when any of them is, and is
+            // then the nearest sensed: the loop keeps it by selects alone (the index test by
+            // `crate::select::pick`, then `minsd`) and compares it with the radius once. A
+            // select on being sensed as well was compiled into a branch, a coin toss in a jam.
             let list = self.near.of(i);
             neighbours.resize(list.len(), Neighbour::default());
             let mut count = 0;
-            let mut closest2 = scratch.closest2;
+            let mut nearest2 = f64::INFINITY;
             for &j in list {
                 let (neighbour, sensed, d2) = sense(j as usize);
                 neighbours[count] = neighbour;
                 count += usize::from(sensed);
-                closest2 = if (j as usize > i) & sensed & (d2 < closest2) {
-                    d2
-                } else {
-                    closest2
-                };
+                let above = crate::select::pick(j as usize > i, d2, f64::INFINITY);
+                nearest2 = if above < nearest2 { above } else { nearest2 };
             }
             neighbours.truncate(count);
-            scratch.closest2 = closest2;
+            if nearest2 <= r2 && nearest2 < scratch.closest2 {
+                scratch.closest2 = nearest2;
+            }
         } else if !self.independent {
             neighbours.extend(
                 (0..self.robots.len())
