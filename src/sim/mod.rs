@@ -486,7 +486,6 @@ impl Simulation {
         let r2 = r * r;
         let me = self.robots[i];
         let neighbours = &mut scratch.neighbours;
-        neighbours.clear();
         // Robot `j` as sensed, whether it is, and its squared distance.
         let sense = |j: usize| {
             let position = self.robots[j].pose.p;
@@ -500,7 +499,7 @@ impl Simulation {
             (neighbour, (j != i) & (d2 <= r2), d2)
         };
         // Either way the sensed robots come in ascending index: the grid's lists are sorted.
-        if listed {
+        let count = if listed {
             // Each listed robot written in the next free slot and kept by advancing the count
             // when it is sensed: no branch to mispredict (in a jam about a third of the listed
             // robots lie in the lists' skin).
@@ -509,8 +508,12 @@ impl Simulation {
             // then the nearest sensed: the loop keeps it by selects alone (the index test by
             // `crate::select::pick`, then `minsd`) and compares it with the radius once. A
             // select on being sensed as well was compiled into a branch, a coin toss in a jam.
+            // The buffer only grows, so that it is not filled anew for every robot: its slots
+            // past the count hold robots of earlier evaluations, never read.
             let list = self.near.of(i);
-            neighbours.resize(list.len(), Neighbour::default());
+            if neighbours.len() < list.len() {
+                neighbours.resize(list.len(), Neighbour::default());
+            }
             let mut count = 0;
             let mut nearest2 = f64::INFINITY;
             for &j in list {
@@ -520,17 +523,22 @@ impl Simulation {
                 let above = crate::select::pick(j as usize > i, d2, f64::INFINITY);
                 nearest2 = if above < nearest2 { above } else { nearest2 };
             }
-            neighbours.truncate(count);
             if nearest2 <= r2 && nearest2 < scratch.closest2 {
                 scratch.closest2 = nearest2;
             }
+            count
         } else if !self.independent {
+            neighbours.clear();
             neighbours.extend(
                 (0..self.robots.len())
                     .map(sense)
                     .filter_map(|(n, s, _)| s.then_some(n)),
             );
-        }
+            neighbours.len()
+        } else {
+            0
+        };
+        let neighbours = &neighbours[..count];
         let err = Pose {
             p: self.error_position(i),
             theta: me.heading_error,
