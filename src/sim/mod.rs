@@ -204,6 +204,8 @@ impl Simulation {
             sim.goal_headings = sim.robots.iter().map(|r| heading(r.goal.theta)).collect();
         }
         sim.build_obstacle_cells();
+        // Room for every obstacle to be sensed (`Scratch::obstacles`).
+        sim.scratch.obstacles.reserve(sim.obstacles.len());
         sim.evaluate_all(None);
         sim.observe();
         sim
@@ -265,11 +267,14 @@ impl Simulation {
         } else {
             self.robots.len()
         };
-        let most = (longest as f64 * factor) as usize + self.obstacles.len();
+        let obstacles = self.obstacles.len();
+        let most = (longest as f64 * factor) as usize + obstacles;
         let reserve = |scratch: &mut Scratch| {
             scratch.constraints.reserve(most);
             let have = scratch.neighbours.len();
             scratch.neighbours.reserve(most.saturating_sub(have));
+            // The sensed obstacles: all of them at most.
+            scratch.obstacles.reserve(obstacles);
         };
         reserve(&mut self.scratch);
         #[cfg(not(target_arch = "wasm32"))]
@@ -545,8 +550,12 @@ impl Simulation {
         };
         // The heading's sine and cosine, once for the controller and the barrier.
         let h = heading(me.pose.theta);
-        let mut e = self.evaluate_facing(me.pose, h, err, self.speeds[i], neighbours);
-        let sensed = sensed_obstacles(&self.obstacles, &self.obstacle_cells, me.pose.p, rs);
+        // The sensed obstacles, found once for the controller's passes and the barrier's.
+        let sensed = &mut scratch.obstacles;
+        sensed.clear();
+        sensed.extend(self.sensed_obstacles(me.pose.p));
+        let mut e = self.evaluate_facing(me.pose, h, err, self.speeds[i], neighbours, sensed);
+        let sensed = sensed.iter().map(|&k| &self.obstacles[k as usize]);
         // The neighbours the barrier can bind on at this speed (the others change nothing).
         let binding = safety::neighbour_reach(&self.params, e.command.v);
         let binding2 = binding * binding;
@@ -662,11 +671,23 @@ impl Simulation {
         speed: f64,
         neighbours: &[Neighbour],
     ) -> Evaluation {
-        self.evaluate_facing(pose, heading(pose.theta), err, speed, neighbours)
+        let sensed: Vec<u32> = self.sensed_obstacles(pose.p).collect();
+        self.evaluate_facing(pose, heading(pose.theta), err, speed, neighbours, &sensed)
+    }
+
+    /// The obstacles a robot at `p` senses: those whose surface is within `R_s`, as indices in
+    /// ascending order (the cells' candidates, tested).
+    fn sensed_obstacles(&self, p: DVec2) -> impl Iterator<Item = u32> + '_ {
+        let rs = self.params.sense_radius;
+        self.obstacle_cells
+            .near(p)
+            .filter(move |&k| self.obstacles[k].clearance(p) <= rs)
+            .map(|k| k as u32)
     }
 
     /// [`Self::evaluate_at`] with the heading `h` of `pose` taken by the caller
-    /// ([`evaluate_facing`]).
+    /// ([`evaluate_facing`]) and the obstacles it senses found already
+    /// ([`Self::sensed_obstacles`]).
     #[inline(never)]
     fn evaluate_facing(
         &self,
@@ -675,15 +696,15 @@ impl Simulation {
         err: Pose,
         speed: f64,
         neighbours: &[Neighbour],
+        sensed: &[u32],
     ) -> Evaluation {
-        let rs = self.params.sense_radius;
         evaluate_facing(
             &self.params,
             pose,
             h,
             err,
             speed,
-            sensed_obstacles(&self.obstacles, &self.obstacle_cells, pose.p, rs),
+            sensed.iter().map(|&k| &self.obstacles[k as usize]),
             neighbours.iter().copied(),
         )
     }
@@ -976,13 +997,16 @@ fn put(
     *chord = ch;
 }
 
-/// A robot evaluation's buffers, reused from robot to robot: its sensed neighbours and the
-/// barrier's constraints; and the smallest squared distance from a robot evaluated with them
+/// A robot evaluation's buffers, reused from robot to robot: its sensed neighbours and
+/// obstacles, and the barrier's constraints; and the smallest squared distance from a robot evaluated with them
 /// to a listed robot of higher index within the lists' reach (`+∞` for none), for the metrics'
 /// closest pair (`Simulation::closest_listed2`).
 #[derive(Clone, Debug, Default)]
 struct Scratch {
     neighbours: Vec<Neighbour>,
+    // The robot's sensed obstacles (`Simulation::sensed_obstacles`): found once, read by the
+    // controller's passes over them and by the barrier.
+    obstacles: Vec<u32>,
     constraints: safety::Constraints,
     closest2: f64,
 }
@@ -998,20 +1022,6 @@ fn moved_within(was: DVec2, now: DVec2, half: f64) -> bool {
 /// wider lists to read against fewer rebuilds. A quarter is a usual choice for Verlet lists,
 /// not one tuned here.
 const SKIN: f64 = 0.25;
-
-/// The obstacles a robot at `p` senses: those whose surface is within `rs`, ascending (the
-/// cells' candidates, tested).
-fn sensed_obstacles<'a>(
-    obstacles: &'a [Obstacle],
-    cells: &'a ObstacleCells,
-    p: DVec2,
-    rs: f64,
-) -> impl Iterator<Item = &'a Obstacle> + Clone + 'a {
-    cells
-        .near(p)
-        .map(move |k| &obstacles[k])
-        .filter(move |o| o.clearance(p) <= rs)
-}
 
 #[cfg(test)]
 mod tests {
