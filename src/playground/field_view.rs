@@ -77,11 +77,12 @@ impl Live {
                         }
                     }));
                 }
-                let e = self.sim.evaluate_at(
+                let e = self.sim.evaluate_at_with(
                     pose,
                     pose.error_to(robot.goal),
                     robot.last.command.v.abs(),
                     &self.neighbours,
+                    &mut self.sensed_obstacles,
                 );
                 self.field.extend_from_slice(&[x, y, e.field.x, e.field.y]);
             }

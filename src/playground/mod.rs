@@ -91,6 +91,7 @@ pub struct Live {
     field_points: Vec<DVec2>,
     near: Vec<u32>,
     neighbours: Vec<Neighbour>,
+    sensed_obstacles: Vec<u32>,
 }
 
 impl Live {
@@ -119,6 +120,7 @@ impl Live {
             field_points: Vec::new(),
             near: Vec::new(),
             neighbours: Vec::new(),
+            sensed_obstacles: Vec::new(),
         };
         live.start();
         Ok(live)

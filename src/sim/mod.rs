@@ -671,8 +671,25 @@ impl Simulation {
         speed: f64,
         neighbours: &[Neighbour],
     ) -> Evaluation {
-        let sensed: Vec<u32> = self.sensed_obstacles(pose.p).collect();
-        self.evaluate_facing(pose, heading(pose.theta), err, speed, neighbours, &sensed)
+        self.evaluate_at_with(pose, err, speed, neighbours, &mut Vec::new())
+    }
+
+    /// [`Self::evaluate_at`] with a buffer for the indices of the obstacles it senses, reused
+    /// from call to call by a caller that samples many points (the playground's field view),
+    /// so that a call allocates nothing once the buffer has grown.
+    #[inline]
+    #[must_use]
+    pub fn evaluate_at_with(
+        &self,
+        pose: Pose,
+        err: Pose,
+        speed: f64,
+        neighbours: &[Neighbour],
+        obstacles: &mut Vec<u32>,
+    ) -> Evaluation {
+        obstacles.clear();
+        obstacles.extend(self.sensed_obstacles(pose.p));
+        self.evaluate_facing(pose, heading(pose.theta), err, speed, neighbours, obstacles)
     }
 
     /// The obstacles a robot at `p` senses: those whose surface is within `R_s`, as indices in
@@ -998,9 +1015,9 @@ fn put(
 }
 
 /// A robot evaluation's buffers, reused from robot to robot: its sensed neighbours and
-/// obstacles, and the barrier's constraints; and the smallest squared distance from a robot evaluated with them
-/// to a listed robot of higher index within the lists' reach (`+∞` for none), for the metrics'
-/// closest pair (`Simulation::closest_listed2`).
+/// obstacles, and the barrier's constraints; and the smallest squared distance from a robot
+/// evaluated with them to a listed robot of higher index within the lists' reach (`+∞` for
+/// none), for the metrics' closest pair (`Simulation::closest_listed2`).
 #[derive(Clone, Debug, Default)]
 struct Scratch {
     neighbours: Vec<Neighbour>,
