@@ -77,7 +77,7 @@ pub fn atan_ratio(y: f64, x: f64) -> f64 {
             std::f64::consts::FRAC_PI_2.copysign(y)
         }
     } else {
-        (y / x).atan()
+        crate::maths::atan(y / x)
     }
 }
 
@@ -264,7 +264,7 @@ where
             let field = keep_c * gp + (1.0 - keep_c) * t;
             let fb = unrotate_by(h, field);
             let v = params.k_v * keep_c * gp_body.x + (1.0 - keep_c) * params.avoid_speed;
-            (field, v, fb.y.atan2(fb.x), keep_c)
+            (field, v, crate::maths::atan2(fb.y, fb.x), keep_c)
         }
         None => {
             let fade = alignment_fade(gp_body.length(), params.align_fade);

@@ -27,7 +27,9 @@ pub mod playground;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
 
-// Selects without a branch, for the hot loops.
+// Selects without a branch, for the hot loops; the sines, cosines and arctangents every build
+// takes alike.
+mod maths;
 mod select;
 
 #[cfg(test)]

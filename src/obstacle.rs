@@ -41,7 +41,7 @@ pub fn transition(d: f64, big_r: f64, eps: f64) -> f64 {
     } else if d > big_r + eps {
         1.0
     } else {
-        0.5 * ((d - big_r) / eps * PI - 0.5 * PI).sin() + 0.5
+        0.5 * crate::maths::sin((d - big_r) / eps * PI - 0.5 * PI) + 0.5
     }
 }
 
@@ -52,7 +52,7 @@ pub fn transition(d: f64, big_r: f64, eps: f64) -> f64 {
 #[must_use]
 pub fn approach_angle(motion: DVec2, gamma_r: DVec2) -> f64 {
     let c = motion.dot(-gamma_r) / (motion.length() * gamma_r.length());
-    c.clamp(-1.0, 1.0).acos()
+    crate::maths::acos(c.clamp(-1.0, 1.0))
 }
 
 /// Which case of eq. `eq_ob_avoid_VF` applies.

@@ -223,7 +223,7 @@ pub fn circle_swap(n: usize, radius: f64) -> Scenario {
     let robots = (0..n)
         .map(|k| {
             let a = 2.0 * PI * k as f64 / n as f64;
-            let p = radius * DVec2::from_angle(a);
+            let p = radius * crate::maths::from_angle(a);
             let facing = crate::se2::wrap_angle(a + PI);
             robot([p.x, p.y, facing], [-p.x, -p.y, facing])
         })
@@ -258,7 +258,7 @@ pub fn crowd(n: usize) -> Scenario {
     let radius = if n < 2 {
         0.5 * spacing
     } else {
-        spacing / (2.0 * (PI / n as f64).sin())
+        spacing / (2.0 * crate::maths::sin(PI / n as f64))
     };
     let mut s = Scenario {
         name: format!("crowd of {n}: antipodal swap on a circle of radius {radius:.1}"),
@@ -279,7 +279,7 @@ pub fn crowd_with_obstacles(n: usize, m: usize) -> Scenario {
     let half = 0.5 * s.robots.first().map_or(0.0, |r| r.start_pose().p.length());
     s.obstacles = (0..m)
         .map(|k| Obstacle {
-            center: half * DVec2::from_angle(2.0 * PI * (k as f64 + 0.5) / m as f64),
+            center: half * crate::maths::from_angle(2.0 * PI * (k as f64 + 0.5) / m as f64),
             radius: 1.0,
             influence: 3.0,
         })

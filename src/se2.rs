@@ -36,7 +36,7 @@ pub fn wrap_angle(a: f64) -> f64 {
 #[inline]
 #[must_use]
 pub fn heading(theta: f64) -> DVec2 {
-    let (s, c) = theta.sin_cos();
+    let (s, c) = crate::maths::sin_cos(theta);
     DVec2::new(c, s)
 }
 
@@ -76,7 +76,8 @@ pub fn alpha(theta: f64) -> f64 {
         1.0 - t2 / 12.0 - t2 * t2 / 720.0
     } else {
         let h = 0.5 * theta;
-        h * h.cos() / h.sin()
+        let (s, c) = crate::maths::sin_cos(h);
+        h * c / s
     }
 }
 
@@ -213,7 +214,8 @@ pub fn exp(u: Twist) -> Pose {
         // sin t / t and (1 − cos t)/t by their series.
         (1.0 - t * t / 6.0, t / 2.0 - t * t * t / 24.0)
     } else {
-        (t.sin() / t, (1.0 - t.cos()) / t)
+        let (s, c) = crate::maths::sin_cos(t);
+        (s / t, (1.0 - c) / t)
     };
     let p = DVec2::new(
         s_over_t * u.phi.x - c_over_t * u.phi.y,
@@ -257,7 +259,7 @@ mod tests {
 
     /// 3×3 homogeneous matrix of a pose (eq. `eq_confi_matrix`).
     fn matrix(h: Pose) -> [[f64; 3]; 3] {
-        let (s, c) = h.theta.sin_cos();
+        let (s, c) = crate::maths::sin_cos(h.theta);
         [[c, -s, h.p.x], [s, c, h.p.y], [0.0, 0.0, 1.0]]
     }
 

@@ -338,10 +338,20 @@ pub fn at_rest_beside(speed: f64, beside: f64) -> bool {
 /// from 0 (within `safe` of the segment from the robot to its goal: in the way) to 1 (beyond
 /// `BLOCKING·safe`: clear). Always 0 for a neighbour that moves. Smooth, so that a robot near
 /// the border does not chatter between circling and not circling.
+// The test inline, in `cluster`'s loop over every neighbour in range; the rest, for a
+// neighbour at rest only, is a call (its goal position and transition would otherwise grow
+// the loop until the compiler left `aside` out of line as a whole).
+#[inline]
 fn aside(me: Approach, n: Neighbour, safe: f64) -> f64 {
     if !at_rest(me, n) {
         return 0.0;
     }
+    aside_at_rest(me, n, safe)
+}
+
+/// [`aside`] of a neighbour at rest.
+#[inline(never)]
+fn aside_at_rest(me: Approach, n: Neighbour, safe: f64) -> f64 {
     let way = segment_distance(n.position, me.position, me.goal());
     crate::obstacle::transition(way, safe, (BLOCKING - 1.0) * safe)
 }
@@ -450,7 +460,7 @@ mod tests {
             let p = DVec2::new(rng.unit() * 100.0 - 50.0, rng.unit() * 100.0 - 50.0);
             let r = 0.5 + rng.unit() * 20.0;
             let angle = rng.unit() * 2.0 * PI;
-            let mut q = p + r * DVec2::new(angle.cos(), angle.sin());
+            let mut q = p + r * crate::maths::from_angle(angle);
             if k % 2 == 0 {
                 // Anywhere in a disc of twice the radius.
                 q = p + (rng.unit() * 2.0) * (q - p);

@@ -157,7 +157,7 @@ pub enum Layout {
 /// The goal slots of `n` robots `spacing` apart in `layout`, centred on the origin.
 #[must_use]
 pub fn slots(layout: Layout, n: usize, spacing: f64, angle: f64) -> Vec<DVec2> {
-    let along = DVec2::from_angle(angle);
+    let along = crate::maths::from_angle(angle);
     match layout {
         Layout::Grid => {
             let cols = (n as f64).sqrt().ceil() as usize;
@@ -177,10 +177,10 @@ pub fn slots(layout: Layout, n: usize, spacing: f64, angle: f64) -> Vec<DVec2> {
             let radius = if n < 2 {
                 0.0
             } else {
-                spacing / (2.0 * (PI / n as f64).sin())
+                spacing / (2.0 * crate::maths::sin(PI / n as f64))
             };
             (0..n)
-                .map(|k| radius * DVec2::from_angle(angle + 2.0 * PI * k as f64 / n as f64))
+                .map(|k| radius * crate::maths::from_angle(angle + 2.0 * PI * k as f64 / n as f64))
                 .collect()
         }
     }

@@ -35,7 +35,7 @@ fn half_turn(x: f64) -> (f64, f64) {
                     + x2 * (-1.0 / 720.0 + x2 * (1.0 / 40_320.0 - x2 / 3_628_800.0))));
         (sinc, cos)
     } else {
-        let (s, c) = x.sin_cos();
+        let (s, c) = crate::maths::sin_cos(x);
         (s / x, c)
     }
 }

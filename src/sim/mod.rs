@@ -17,7 +17,7 @@
 //!
 //! # Where a planner enters
 //! The loop (integrate, find neighbours, evaluate, observe) and the metrics know nothing of the
-//! method but `Simulation::evaluate_robot`, which asks the DVF controller
+//! method but `Simulation::evaluation`, which asks the DVF controller
 //! ([`crate::controller::evaluate`]) and the safety barrier ([`crate::safety::filter`]) for one
 //! robot's command from what it senses. A baseline planner (ORCA, a unicycle CLF controller
 //! with the barrier, the dipole field) would be a module beside `controller` and a branch
@@ -433,9 +433,12 @@ impl Simulation {
         #[cfg(target_arch = "wasm32")]
         let parallel = false;
         if !parallel {
+            // The buffers taken out of `self` once for all robots, not once per robot.
+            let mut scratch = std::mem::take(&mut self.scratch);
             for i in 0..self.robots.len() {
-                self.evaluate_robot(i);
+                self.evaluate_robot_with(i, &mut scratch);
             }
+            self.scratch = scratch;
         }
         #[cfg(not(target_arch = "wasm32"))]
         let closest2 = if parallel {
@@ -454,14 +457,20 @@ impl Simulation {
     }
 
     /// Robot `i`'s command from what it senses now, into `last`/`commands` (see
-    /// [`Self::evaluation`]).
+    /// [`Self::evaluation`]): for the in-place edits, which evaluate a few robots.
+    fn evaluate_robot(&mut self, i: usize) {
+        let mut scratch = std::mem::take(&mut self.scratch);
+        self.evaluate_robot_with(i, &mut scratch);
+        self.scratch = scratch;
+    }
+
+    /// [`Self::evaluate_robot`] with the buffers of `scratch`, taken out of `self` by the caller
+    /// (a step, once for all its robots).
     // Not inlined: a step and the in-place edits call it, and one copy keeps the wasm module
     // small (a call per robot costs nothing next to its evaluation).
     #[inline(never)]
-    fn evaluate_robot(&mut self, i: usize) {
-        let mut scratch = std::mem::take(&mut self.scratch);
-        let (e, chord) = self.evaluation(i, &mut scratch);
-        self.scratch = scratch;
+    fn evaluate_robot_with(&mut self, i: usize, scratch: &mut Scratch) {
+        let (e, chord) = self.evaluation(i, scratch);
         self.store(i, e, chord);
     }
 

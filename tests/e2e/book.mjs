@@ -1,8 +1,8 @@
 // End-to-end test of the book (`make docs` writes target/book/): every chapter of
 // docs/book/src/SUMMARY.md opens in Chromium with no console message, and every figure in it
 // (loaded lazily, as the reader scrolls to it) drew. Every figure with a `time` attribute shows
-// the state of `dvf simulate --csv` at that time: each robot's pose within POSE_TOLERANCE of
-// the trajectory's row at that step.
+// the state of `dvf simulate --csv` at that time: each robot's pose equal to the trajectory's
+// row at that step.
 //
 // Run: make test-e2e   (or: node tests/e2e/book.mjs after make docs)
 
@@ -20,12 +20,11 @@ const CSV_DIR = join(ROOT, 'target', 'book-check');
  */
 const DREW_PIXELS = 100;
 /**
- * The page runs the crate compiled to wasm, `dvf simulate` the same code natively: the same
- * f64 arithmetic, but the maths library's sin, cos, atan and exp may round differently in the
- * last bit, and the differences grow over the steps. 1e-6 m (and rad) is far below anything
- * drawn (a pixel is about 0.1 m) and far above the differences measured (2.9e-8 at most, README, "The book").
+ * The page runs the crate compiled to wasm, `dvf simulate` the same code natively, with the same
+ * f64 arithmetic and the same maths library (src/maths.rs): the same bits, so the poses must be
+ * equal (README, "The book"). The CSV writes each number so that it reads back to its bits.
  */
-const POSE_TOLERANCE = 1e-6;
+const POSE_TOLERANCE = 0;
 
 if (!existsSync(join(BOOK, 'index.html'))) throw new Error(`${BOOK} is missing: run make docs first`);
 const chapters = [...readFileSync(SUMMARY, 'utf8').matchAll(/\]\(([\w-]+)\.md\)/g)].map((m) => `${m[1]}.html`);
