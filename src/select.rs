@@ -1,20 +1,21 @@
-//! Selects that compile to no branch: `a` when `take`, else `b`, by masking their bits.
+//! Selects meant to compile to no branch: `a` when `take`, else `b`.
 //!
-//! A plain `if take { a } else { b }` is a select to LLVM, which may still turn it into a branch
-//! (it did for several selects on one condition in `swarm::cluster`, and for one on an index test
-//! in the simulation's sensing loop). Where the condition is a coin toss, as whether a neighbour
-//! in a crowd is ahead or behind, a branch is mispredicted about half the time. The standard
-//! library's `std::hint::select_unpredictable` says the same, but only from Rust 1.88, above the
-//! crate's minimum supported version.
+//! A plain `if take { a } else { b }` is a select to LLVM, which may still turn it into a branch.
+//! Where the condition is a coin toss, as whether a neighbour in a crowd is ahead or behind, a
+//! branch is mispredicted about half the time. These say so to the compiler
+//! (`std::hint::select_unpredictable`). On x86-64 that is enough for a vector ([`pick2`]) and
+//! for a scalar whose condition is a comparison of floats; a scalar `f64` on another condition
+//! was still compiled into a branch, and `swarm::cluster` makes its condition such a
+//! comparison or selects the bits. (An earlier version masked the bits by hand; the compiler
+//! recognised the select and branched all the same.)
 
 use glam::DVec2;
 
-/// `a` when `take`, else `b`, the same bits, without a branch.
+/// `a` when `take`, else `b`, the same bits.
 #[inline]
 #[must_use]
 pub(crate) fn pick(take: bool, a: f64, b: f64) -> f64 {
-    let mask = u64::from(take).wrapping_neg();
-    f64::from_bits((a.to_bits() & mask) | (b.to_bits() & !mask))
+    std::hint::select_unpredictable(take, a, b)
 }
 
 /// [`pick`] for both components of a vector.

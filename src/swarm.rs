@@ -143,9 +143,14 @@ pub fn cluster(
             // By selects, without a branch to mispredict: whether a neighbour is ahead is a
             // coin toss in a crowd, and so is whether it is the nearest so far. `aside` and
             // `in_a_parked_formation` are cheap for a neighbour that moves (the usual case),
-            // so they are taken for every neighbour. By `pick`: plain selects on one
-            // condition were compiled into a branch.
+            // so they are taken for every neighbour.
+            // The compiler turns a select of one `f64` into a branch unless its condition is a
+            // comparison of floats (`pick` or not): the condition is made one, by giving a
+            // neighbour that is no candidate a key that no comparison takes (its exponent's bits
+            // all set: `+∞` or NaN), and the speed is selected as bits. Measured in the jam of
+            // the crowd of 1,000: 6 % less time a step (README, Performance).
             let (mut nearest2, mut nearest) = (f64::INFINITY, Neighbour::default());
+            let mut speed = 0.0f64.to_bits();
             let mut parked = f64::INFINITY;
             for n in in_range {
                 let to = n.position - p_i;
@@ -160,16 +165,20 @@ pub fn cluster(
                     & (me.field.dot(to) > 0.0)
                     & !in_formation
                     & (aside(me, n, safe) < 1.0);
+                let key = f64::from_bits(
+                    d2.to_bits() | (u64::from(!candidate).wrapping_neg() & f64::INFINITY.to_bits()),
+                );
                 // The first of equally near ones, as `min_by` keeps. A candidate is in range,
                 // so its squared distance is finite: `+∞` left means none.
-                let take = candidate & (d2 < nearest2);
-                nearest2 = pick(take, d2, nearest2);
+                let take = key < nearest2;
+                nearest2 = pick(take, key, nearest2);
+                speed = std::hint::select_unpredictable(take, n.speed.to_bits(), speed);
                 nearest.position = pick2(take, n.position, nearest.position);
-                nearest.speed = pick(take, n.speed, nearest.speed);
             }
             if nearest2 == f64::INFINITY {
                 return None;
             }
+            nearest.speed = f64::from_bits(speed);
             (
                 virtual_obstacle_between(p_i, me.speed, nearest),
                 Some(nearest.position.distance(p_i) - safe),

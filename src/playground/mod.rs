@@ -179,7 +179,7 @@ impl Live {
         let n = n.min(left);
         for _ in 0..n {
             self.sim.step();
-            if self.steps() % self.record_every == 0 || self.finished() {
+            if self.steps().is_multiple_of(self.record_every) || self.finished() {
                 self.record();
             }
         }
@@ -599,7 +599,7 @@ mod tests {
         live.step(1);
         assert_eq!(
             live.trails().len_of(2),
-            usize::from(live.steps() % live.record_every == 0)
+            usize::from(live.steps().is_multiple_of(live.record_every))
         );
         assert_eq!(live.status().len(), 3 * STATUS_STRIDE);
         // Removing a robot drops it.

@@ -175,7 +175,7 @@ impl Metrics {
                 }
                 // No pair within the reach: the closest pair matters only while no closer one
                 // has been seen, which a swarm at bounded density leaves behind at once.
-                if min.is_none() && self.min_pair.map_or(true, |m| m > o.list_reach) {
+                if min.is_none() && self.min_pair.is_none_or(|m| m > o.list_reach) {
                     for i in 0..n {
                         for j in i + 1..n {
                             let d = robots[i].pose.p.distance(robots[j].pose.p);

@@ -119,11 +119,15 @@ pub struct Simulation {
     // `list_reach(&params)`, once: the parameters of a simulation never change.
     reach: f64,
     // Whether the step finds each robot's slowest robots within the avoidance range
-    // (`find_slowest`), so that the lists need not reach twice that range (`slowest_known`).
+    // (`sense_all`), so that the lists need not reach twice that range (`slowest_known`).
     slowest_known: bool,
-    // Per robot, the smallest speed of the robots within the avoidance range of it (at
-    // another position), +∞ for none; empty unless `slowest_known`.
-    slowest: Vec<f64>,
+    // `controller_reach(&params, slowest_known)`, once.
+    controller_reach: f64,
+    // Each robot as the others sense it this step (`sense_all`): its position, its speed and,
+    // when `slowest_known`, the smallest speed of the robots within the avoidance range of it
+    // (at another position, +∞ for none). Packed, so that the sensing loop of an evaluation
+    // reads one record per listed robot.
+    sensed: Vec<Neighbour>,
     // The smallest squared distance between two listed robots within the lists' reach, as the
     // evaluations of the last `evaluate_all` found it on their way (`+∞` for none), for the
     // metrics' closest pair; `None` when they did not see the whole reach (`R_s` shorter
@@ -183,8 +187,9 @@ impl Simulation {
             near: Neighbours::new(),
             positions: Vec::with_capacity(n),
             reach: list_reach(&s.params, slowest_known),
+            controller_reach: controller_reach(&s.params, slowest_known),
             slowest_known,
-            slowest: Vec::new(),
+            sensed: Vec::new(),
             closest2: None,
             scratch: Scratch::default(),
             #[cfg(not(target_arch = "wasm32"))]
@@ -349,9 +354,10 @@ impl Simulation {
             .all(|(&was, r)| moved_within(was, r.pose.p, half))
     }
 
-    /// Each robot's slowest robot within the avoidance range of it (at another position), from
-    /// the lists and the snapshot's speeds, when the step knows it ([`slowest_known`]): a robot
-    /// deciding whether a neighbour stands in a parked formation reads it
+    /// Each robot as the others sense it this step, into `sensed`: its position, its speed
+    /// and, when the step knows it ([`slowest_known`]), its slowest robot within the
+    /// avoidance range of it (at another position), from the lists and the snapshot's speeds.
+    /// A robot deciding whether a neighbour stands in a parked formation reads that
     /// ([`Neighbour::slowest_near`]) instead of searching its own neighbours around that one.
     /// The same answer, since it would find the same robots: with `R_s` at least twice the
     /// range, every robot within the range of a neighbour within the range is sensed. The
@@ -363,10 +369,15 @@ impl Simulation {
     /// as the fastest robot, or at the circling speed `v_c` on an obstacle's surface
     /// (`Approach::speed`): the robots not at rest beside the faster of those two are given
     /// `+∞` without a search, which nothing reads. In open space that is every robot.
-    fn find_slowest(&mut self) {
-        if !self.slowest_known {
+    ///
+    /// One record per robot and step, read by every robot that lists it: the sensing loop of
+    /// an evaluation copies it whole rather than gathering position, speed and slowest robot
+    /// from three arrays (one of them the robots' whole states).
+    fn sense_all(&mut self) {
+        if self.independent {
             return;
         }
+        let known = self.slowest_known;
         let range = pair_range(self.params.avoid_radius, self.params.transition_width);
         let range2 = range * range;
         let fastest = self
@@ -395,7 +406,12 @@ impl Simulation {
             }
             slowest
         };
-        let mut out = std::mem::take(&mut self.slowest);
+        let record = |n: usize| Neighbour {
+            position: self.robots[n].pose.p,
+            speed: self.speeds[n],
+            slowest_near: known.then(|| slowest(n)),
+        };
+        let mut out = std::mem::take(&mut self.sensed);
         if self.threaded() {
             #[cfg(not(target_arch = "wasm32"))]
             {
@@ -403,14 +419,14 @@ impl Simulation {
                 (0..self.robots.len())
                     .into_par_iter()
                     .with_min_len(CHEAP_CHUNK)
-                    .map(slowest)
+                    .map(record)
                     .collect_into_vec(&mut out);
             }
         } else {
             out.clear();
-            out.extend((0..self.robots.len()).map(slowest));
+            out.extend((0..self.robots.len()).map(record));
         }
-        self.slowest = out;
+        self.sensed = out;
     }
 
     /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
@@ -426,7 +442,7 @@ impl Simulation {
             }
         }
         self.find_neighbours(advanced);
-        self.find_slowest();
+        self.sense_all();
         self.scratch.closest2 = f64::INFINITY;
         #[cfg(not(target_arch = "wasm32"))]
         let parallel = self.evaluate_in_parallel();
@@ -500,59 +516,70 @@ impl Simulation {
         let r2 = r * r;
         let me = self.robots[i];
         let neighbours = &mut scratch.neighbours;
-        // Robot `j` as sensed, whether it is, and its squared distance.
-        let sense = |j: usize| {
-            let position = self.robots[j].pose.p;
-            let neighbour = Neighbour {
-                position,
-                speed: self.speeds[j],
-                // Empty when the step does not know them (`find_slowest`).
-                slowest_near: self.slowest.get(j).copied(),
-            };
-            let d2 = position.distance_squared(me.pose.p);
-            (neighbour, (j != i) & (d2 <= r2), d2)
-        };
-        // Either way the sensed robots come in ascending index: the grid's lists are sorted.
-        let count = if listed {
-            // Each listed robot written in the next free slot and kept by advancing the count
-            // when it is sensed: no branch to mispredict (in a jam about a third of the listed
-            // robots lie in the lists' skin).
-            // On the way, the closest listed robot of higher index, for the metrics' closest
-            // pair. The nearest of those robots is sensed exactly when any of them is, and is
-            // then the nearest sensed: the loop keeps it by selects alone (the index test by
-            // `crate::select::pick`, then `minsd`) and compares it with the radius once. A
-            // select on being sensed as well was compiled into a branch, a coin toss in a jam.
+        let p = me.pose.p;
+        // The sensed robots within the controller's reach, as a count of the buffer's first
+        // slots, and the others sensed, as a range of its slots. Either way those within reach
+        // come in ascending index: the grid's lists are sorted.
+        let (count, others) = if listed {
+            // Each listed robot's record (`sense_all`) written in the next free slot of one of
+            // two runs, and kept by moving that run's end when it is sensed: no branch to
+            // mispredict (in a jam about a third of the listed robots lie in the lists' skin).
+            // The lists never hold the robot itself.
+            // The first run, from the buffer's start in ascending index, holds the sensed
+            // robots within the controller's reach (`controller_reach`); the second, from the
+            // end down, the others sensed, which only the barrier reads. The controller is then
+            // given the first alone: the virtual obstacle's choice (`swarm::cluster`) tests
+            // every robot it is given for the avoidance range, and in a jam that test was a
+            // coin toss (six of ten sensed robots within it). The same bits: the controller
+            // sees the robots it can use in the same order, and the barrier's limits are minima
+            // and maxima, whatever the order.
+            // On the way, the closest listed robot, for the metrics' closest pair (the least
+            // squared distance over the robots' lists is that of the closest pair, each pair
+            // being seen from both ends, with the same bits: (a − b)² = (b − a)²). The nearest
+            // listed robot is sensed exactly when any is, and is then the nearest sensed: the
+            // loop keeps it by a select alone (`minsd`) and compares it with the radius once.
             // The buffer only grows, so that it is not filled anew for every robot: its slots
-            // past the count hold robots of earlier evaluations, never read.
+            // outside the runs hold robots of earlier evaluations, never read.
             let list = self.near.of(i);
-            if neighbours.len() < list.len() {
-                neighbours.resize(list.len(), Neighbour::default());
+            let len = list.len();
+            if neighbours.len() < 2 * len {
+                neighbours.resize(2 * len, Neighbour::default());
             }
-            let mut count = 0;
+            let split = self.controller_reach.min(r);
+            let split2 = split * split;
+            // The first run's end, and the second's start: it grows down from the buffer's
+            // end, and its next slot `far − 1` stays above the first run's slots (at least
+            // `len` while a listed robot is left to place).
+            let (mut near, mut far) = (0, 2 * len);
             let mut nearest2 = f64::INFINITY;
             for &j in list {
-                let (neighbour, sensed, d2) = sense(j as usize);
-                neighbours[count] = neighbour;
-                count += usize::from(sensed);
-                let above = crate::select::pick(j as usize > i, d2, f64::INFINITY);
-                nearest2 = if above < nearest2 { above } else { nearest2 };
+                let neighbour = self.sensed[j as usize];
+                let d2 = neighbour.position.distance_squared(p);
+                let within = d2 <= split2;
+                let beyond = !within & (d2 <= r2);
+                neighbours[std::hint::select_unpredictable(within, near, far - 1)] = neighbour;
+                near += usize::from(within);
+                far -= usize::from(beyond);
+                nearest2 = if d2 < nearest2 { d2 } else { nearest2 };
             }
             if nearest2 <= r2 && nearest2 < scratch.closest2 {
                 scratch.closest2 = nearest2;
             }
-            count
+            (near, far..2 * len)
         } else if !self.independent {
             neighbours.clear();
             neighbours.extend(
-                (0..self.robots.len())
-                    .map(sense)
-                    .filter_map(|(n, s, _)| s.then_some(n)),
+                self.sensed
+                    .iter()
+                    .enumerate()
+                    .filter(|&(j, n)| j != i && n.position.distance_squared(p) <= r2)
+                    .map(|(_, &n)| n),
             );
-            neighbours.len()
+            (neighbours.len(), 0..0)
         } else {
-            0
+            (0, 0..0)
         };
-        let neighbours = &neighbours[..count];
+        let (near, far) = (&neighbours[..count], &neighbours[others]);
         let err = Pose {
             p: self.error_position(i),
             theta: me.heading_error,
@@ -563,7 +590,7 @@ impl Simulation {
         let sensed = &mut scratch.obstacles;
         sensed.clear();
         sensed.extend(self.sensed_obstacles(me.pose.p));
-        let mut e = self.evaluate_facing(me.pose, h, err, self.speeds[i], neighbours, sensed);
+        let mut e = self.evaluate_facing(me.pose, h, err, self.speeds[i], near, sensed);
         let sensed = sensed.iter().map(|&k| &self.obstacles[k as usize]);
         // The neighbours the barrier can bind on at this speed (the others change nothing).
         let binding = safety::neighbour_reach(&self.params, e.command.v);
@@ -577,8 +604,8 @@ impl Simulation {
             h,
             e.command,
             e.field,
-            neighbours
-                .iter()
+            near.iter()
+                .chain(far)
                 .map(|n| n.position)
                 .filter(|q| q.distance_squared(me.pose.p) <= binding2),
             sensed,
@@ -873,7 +900,7 @@ impl Simulation {
             self.evaluate_robot(i);
         } else {
             self.find_neighbours(None);
-            self.find_slowest();
+            self.sense_all();
             let near = self.sense_margin();
             let affected = |q: DVec2| q.distance(was) <= near || q.distance(now) <= near;
             for j in 0..self.robots.len() {
@@ -963,7 +990,7 @@ impl Simulation {
 }
 
 /// Whether a step can find each robot's slowest robots within the avoidance range
-/// ([`Simulation::find_slowest`]) and give its neighbours' to the robot that senses them: with
+/// ([`Simulation::sense_all`]) and give its neighbours' to the robot that senses them: with
 /// the default avoidance (the paper's looks for no parked formation) and a sensing radius at
 /// least twice the range (so that a robot senses every robot its search would have found).
 fn slowest_known(p: &Params) -> bool {
@@ -972,6 +999,23 @@ fn slowest_known(p: &Params) -> bool {
         && p.sense_radius
             >= cluster_reach(range, p.avoidance, false) * (1.0 + safety::REACH_MARGIN)
                 + safety::REACH_MARGIN
+}
+
+/// The reach of the sensed robots the controller can use ([`crate::controller::evaluate_facing`]):
+/// the avoidance range `2(R_c + ε)` within which the virtual obstacle's choice takes them
+/// ([`crate::swarm::cluster`]), and the reach of `make_room` (`PRESSED·r_ij`), each widened
+/// by [`safety::REACH_MARGIN`]. A robot farther than both changes neither: the choice leaves
+/// it out, and `make_room` adds an exact zero for it (its transition is 1 beyond its reach).
+/// Everything sensed with the default avoidance when the step does not know its neighbours'
+/// slowest robots ([`slowest_known`]): the choice then looks among them for parked ones
+/// around each neighbour within the range.
+fn controller_reach(p: &Params, slowest_known: bool) -> f64 {
+    if p.avoidance == Avoidance::Exit && !slowest_known {
+        return f64::INFINITY;
+    }
+    let range = pair_range(p.avoid_radius, p.transition_width);
+    let room = crate::swarm::PRESSED * p.safe_radius;
+    range.max(room) * (1.0 + safety::REACH_MARGIN) + safety::REACH_MARGIN
 }
 
 /// The reach of the neighbour lists: the sensed robots that can change a command, and the
