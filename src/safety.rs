@@ -243,9 +243,15 @@ pub fn filter_facing<'a>(
     };
     let safe = 2.0 * params.safe_radius;
     constraints.derive(p, rate * dt, safe, neighbours, obstacles);
-    steer(params, dt, h, c, field, |direction| {
-        constraints.limits(direction, dt)
-    })
+    steer(
+        params,
+        dt,
+        h,
+        c,
+        field,
+        |direction| constraints.limits(direction, dt),
+        |a, b| constraints.limits_of_two(a, b, dt),
+    )
 }
 
 /// The barrier's constraints on one robot: for each neighbour and obstacle, the unit vector
@@ -293,9 +299,28 @@ impl Constraints {
         }
         limits
     }
+
+    /// [`Self::limits`] along `a` and along `b`, in one pass over the constraints: the same
+    /// bits as two calls.
+    #[must_use]
+    pub fn limits_of_two(&self, a: DVec2, b: DVec2, dt: f64) -> (SpeedLimits, SpeedLimits) {
+        let (mut along_a, mut along_b) = (SpeedLimits::FREE, SpeedLimits::FREE);
+        for &(u, budget) in &self.items {
+            along_a.keep(u, a, dt, budget);
+            along_b.keep(u, b, dt, budget);
+        }
+        (along_a, along_b)
+    }
 }
 
-/// The rest of [`filter`] once the barrier's limits can be had for any direction.
+/// The rest of [`filter`] once the barrier's limits can be had for any direction (`limits`),
+/// or for two at once (`limits_of_two`).
+///
+/// The step's direction depends on how far the field is held, which the limits along the field
+/// tell; but a field that is not held (the usual case) turns the robot by nothing, and the
+/// step's direction is then known before: the limits along the field and along that step are
+/// taken in one pass, and a held field takes a second pass for its own step. The same bits
+/// either way.
 fn steer(
     params: &Params,
     dt: f64,
@@ -303,14 +328,32 @@ fn steer(
     c: Command,
     field: DVec2,
     limits: impl Fn(DVec2) -> SpeedLimits,
+    limits_of_two: impl Fn(DVec2, DVec2) -> (SpeedLimits, SpeedLimits),
 ) -> (Command, DVec2) {
-    let wanted = (params.k_v * field.length()).min(params.avoid_speed);
-    let held = match field.try_normalize() {
-        Some(along) if wanted > 0.0 => (1.0 - limits(along).hi / wanted).max(0.0),
-        _ => 0.0,
+    let turn = |held: f64| {
+        let turned = c.omega + params.k_a * held * FRAC_PI_2;
+        params.omega_max.map_or(turned, |m| turned.clamp(-m, m))
     };
-    let turned = c.omega + params.k_a * held * FRAC_PI_2;
-    let omega = params.omega_max.map_or(turned, |m| turned.clamp(-m, m));
+    let free = turn(0.0);
+    let free_step = chord_from(h, free, dt);
+    let wanted = (params.k_v * field.length()).min(params.avoid_speed);
+    let (held, free_limits) = match field.try_normalize() {
+        Some(along) if wanted > 0.0 => {
+            let (on_field, on_step) = limits_of_two(along, free_step);
+            ((1.0 - on_field.hi / wanted).max(0.0), on_step)
+        }
+        _ => (0.0, limits(free_step)),
+    };
+    if held == 0.0 {
+        return (
+            Command {
+                v: free_limits.clamp(c.v),
+                omega: free,
+            },
+            free_step,
+        );
+    }
+    let omega = turn(held);
     let step = chord_from(h, omega, dt);
     let v = limits(step).clamp(c.v);
     (Command { v, omega }, step)

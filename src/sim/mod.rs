@@ -276,8 +276,9 @@ impl Simulation {
         let most = (longest as f64 * factor) as usize + obstacles;
         let reserve = |scratch: &mut Scratch| {
             scratch.constraints.reserve(most);
+            // The sensing loop's two runs take up to twice a list (`evaluation`).
             let have = scratch.neighbours.len();
-            scratch.neighbours.reserve(most.saturating_sub(have));
+            scratch.neighbours.reserve((2 * most).saturating_sub(have));
             // The sensed obstacles: all of them at most.
             scratch.obstacles.reserve(obstacles);
         };
