@@ -171,13 +171,21 @@ pub fn neighbour_reach(params: &Params, speed: f64) -> f64 {
     };
     let fastest = speed.abs().max(params.avoid_speed);
     let reach = 2.0 * params.safe_radius * (1.0 + MARGIN) + 2.0 * fastest / rate;
-    reach * (1.0 + REACH_MARGIN) + REACH_MARGIN
+    widened(reach)
 }
 
 /// The relative widening of [`neighbour_reach`] (and of the avoidance range where the
 /// simulation lists neighbours): far above the few ulps of round-off it covers, far below any
 /// distance that matters.
 pub const REACH_MARGIN: f64 = 1e-6;
+
+/// A reach `d` widened by [`REACH_MARGIN`], relatively and absolutely:
+/// `d·(1 + REACH_MARGIN) + REACH_MARGIN`.
+#[inline]
+#[must_use]
+pub fn widened(d: f64) -> f64 {
+    d * (1.0 + REACH_MARGIN) + REACH_MARGIN
+}
 
 /// The command `c` of a robot at `pose` whose field is `field` (world frame), made safe: its
 /// speed clamped by the barrier (see [`speed_limits`]), with `a = barrier_rate·dt` and the

@@ -997,15 +997,13 @@ impl Simulation {
 fn slowest_known(p: &Params) -> bool {
     let range = pair_range(p.avoid_radius, p.transition_width);
     p.avoidance == Avoidance::Exit
-        && p.sense_radius
-            >= cluster_reach(range, p.avoidance, false) * (1.0 + safety::REACH_MARGIN)
-                + safety::REACH_MARGIN
+        && p.sense_radius >= safety::widened(cluster_reach(range, p.avoidance, false))
 }
 
 /// The reach of the sensed robots the controller can use ([`crate::controller::evaluate_facing`]):
 /// the avoidance range `2(R_c + ε)` within which the virtual obstacle's choice takes them
 /// ([`crate::swarm::cluster`]), and the reach of `make_room` (`PRESSED·r_ij`), each widened
-/// by [`safety::REACH_MARGIN`]. A robot farther than both changes neither: the choice leaves
+/// ([`safety::widened`]). A robot farther than both changes neither: the choice leaves
 /// it out, and `make_room` adds an exact zero for it (its transition is 1 beyond its reach).
 /// Everything sensed with the default avoidance when the step does not know its neighbours'
 /// slowest robots ([`slowest_known`]): the choice then looks among them for parked ones
@@ -1016,7 +1014,7 @@ fn controller_reach(p: &Params, slowest_known: bool) -> f64 {
     }
     let range = pair_range(p.avoid_radius, p.transition_width);
     let room = crate::swarm::PRESSED * p.safe_radius;
-    range.max(room) * (1.0 + safety::REACH_MARGIN) + safety::REACH_MARGIN
+    safety::widened(range.max(room))
 }
 
 /// The reach of the neighbour lists: the sensed robots that can change a command, and the
@@ -1030,8 +1028,7 @@ fn controller_reach(p: &Params, slowest_known: bool) -> f64 {
 /// with a barrier, the sensing radius.
 fn list_reach(p: &Params, slowest_known: bool) -> f64 {
     let range = pair_range(p.avoid_radius, p.transition_width);
-    let avoidance = cluster_reach(range, p.avoidance, slowest_known) * (1.0 + safety::REACH_MARGIN)
-        + safety::REACH_MARGIN;
+    let avoidance = safety::widened(cluster_reach(range, p.avoidance, slowest_known));
     let barrier = match (p.barrier_rate, p.v_max) {
         (None, _) => 0.0,
         (Some(_), Some(v)) => safety::neighbour_reach(p, v),
