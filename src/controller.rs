@@ -30,7 +30,7 @@
 //! ([`crate::swarm::make_room`]). The speed is then made safe by [`crate::safety::filter`] in
 //! the simulator.
 
-use crate::field::goal_field_body;
+use crate::field::{goal_field_body, goal_field_body_turned};
 use crate::obstacle::{blend, goal_first, transition, Obstacle};
 use crate::params::{Avoidance, Params};
 use crate::se2::{heading, unrotate, unrotate_by, Pose};
@@ -158,18 +158,51 @@ where
     I: IntoIterator<Item = &'a Obstacle>,
     I::IntoIter: Clone,
 {
-    let h = heading(pose.theta);
-    evaluate_facing(params, pose, h, err, speed, obstacles, neighbours)
+    evaluate_facing(
+        params,
+        pose,
+        Facing::of(pose.theta, err.theta),
+        err,
+        speed,
+        obstacles,
+        neighbours,
+    )
 }
 
-/// [`evaluate`] with the heading `h = (cos θ, sin θ)` of `pose` ([`heading`]) taken by the
-/// caller, who needs it again for the safety barrier ([`crate::safety::filter_facing`]): a
-/// step takes the heading's sine and cosine once per robot.
+/// A robot's heading and heading error as unit vectors: what the controller takes of its
+/// attitude `θ` besides the angles themselves, given once so that a step, which has them at
+/// hand, takes no sine or cosine for them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Facing {
+    /// The heading `h = (cos θ, sin θ)` ([`heading`]), which rotates the body frame into the
+    /// world's.
+    pub heading: DVec2,
+    /// `(cos θ̃, sin θ̃)` of the heading error, from which the log map takes `α(θ̃)`
+    /// ([`crate::se2::alpha_turned`]).
+    pub error: DVec2,
+}
+
+impl Facing {
+    /// The vectors of heading `theta` and heading error `error` (rad), by their sines and
+    /// cosines.
+    #[must_use]
+    pub fn of(theta: f64, error: f64) -> Self {
+        Self {
+            heading: heading(theta),
+            error: heading(error),
+        }
+    }
+}
+
+/// [`evaluate`] with the robot's heading and heading error as unit vectors (`facing`) taken
+/// by the caller: a step keeps the heading from step to step and needs it again for the
+/// safety barrier ([`crate::safety::filter_facing`]), and has the heading error's by rotating
+/// it back by the goal's heading.
 #[must_use]
 pub fn evaluate_facing<'a, I>(
     params: &Params,
     pose: Pose,
-    h: DVec2,
+    facing: Facing,
     err: Pose,
     speed: f64,
     obstacles: I,
@@ -197,7 +230,8 @@ where
     } else {
         err
     };
-    let goal_body = goal_field_body(err);
+    let h = facing.heading;
+    let goal_body = goal_field_body_turned(err, facing.error);
     let goal_world = h.rotate(goal_body);
 
     // Direction of motion under the goal field: the heading, reversed when the robot would

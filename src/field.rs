@@ -27,6 +27,14 @@ pub fn goal_field_body(err: Pose) -> DVec2 {
     -phi(err.p, err.theta)
 }
 
+/// [`goal_field_body`] with the cosine and sine of the heading error, `turn`
+/// = `(cos θ̃, sin θ̃)`, at hand ([`crate::se2::phi_turned`]): a step's, without a sine or cosine.
+#[inline]
+#[must_use]
+pub fn goal_field_body_turned(err: Pose, turn: DVec2) -> DVec2 {
+    -crate::se2::phi_turned(err.p, err.theta, turn)
+}
+
 /// `Γ̃_d = R(θ)Γ̃_dᴮ`: the field in the world frame for a robot of attitude `theta` (rad) with
 /// error pose `err` (eq. `eq_DVF_in_Fb` read backwards).
 #[inline]

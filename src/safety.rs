@@ -135,17 +135,23 @@ fn constraints<'a>(
     obstacles: impl IntoIterator<Item = &'a Obstacle>,
     mut each: impl FnMut(DVec2, f64),
 ) {
+    // `u` is the difference over its length, a unit vector to within an ulp or two: the
+    // barrier's `MARGIN` (relative 1e-9) covers that. A neighbour at the robot's very position
+    // (`d = 0`) gives no direction and is left out.
     let safe_distance = safe_distance * (1.0 + MARGIN);
     for q in neighbours {
         let d = p.distance(q);
-        if let Some(u) = ((p - q) / d).try_normalize() {
-            each(u, 0.5 * a * (d - safe_distance).max(0.0));
+        if d > 0.0 {
+            each((p - q) / d, 0.5 * a * (d - safe_distance).max(0.0));
         }
     }
     for o in obstacles {
         let c = p.distance(o.center);
-        if let Some(u) = ((p - o.center) / c).try_normalize() {
-            each(u, a * (c - o.radius * (1.0 + MARGIN)).max(0.0));
+        if c > 0.0 {
+            each(
+                (p - o.center) / c,
+                a * (c - o.radius * (1.0 + MARGIN)).max(0.0),
+            );
         }
     }
 }

@@ -81,6 +81,27 @@ pub fn alpha(theta: f64) -> f64 {
     }
 }
 
+/// [`alpha`] from the cosine and sine `turn = (cos θ, sin θ)` of `θ`, which a step has at hand
+/// (the robot's heading unrotated by its goal's, [`unrotate_by`]): `cot(θ/2)` is
+/// `(1 + cos θ)/sin θ`, or `sin θ/(1 − cos θ)` where `cos θ < 0`, whichever has no
+/// cancellation, so that no sine or cosine is taken. Below `ALPHA_SERIES_BELOW` the same series
+/// as [`alpha`]. Both have period `2π` in `θ`, so any branch of `θ` gives the value of its own
+/// branch. Within a few ulps of [`alpha`] when `turn` is exact; a `turn` off by `δ` moves it by
+/// about `δ·|θ|/(2 sin²(θ/2))`, at most `δ/θ` near 0 (`alpha_of_the_turn_is_alpha`).
+#[inline]
+#[must_use]
+pub fn alpha_turned(theta: f64, turn: DVec2) -> f64 {
+    let h = 0.5 * theta;
+    if theta.abs() < ALPHA_SERIES_BELOW {
+        let t2 = theta * theta;
+        1.0 - t2 / 12.0 - t2 * t2 / 720.0
+    } else if turn.x >= 0.0 {
+        h * (1.0 + turn.x) / turn.y
+    } else {
+        h * turn.y / (1.0 - turn.x)
+    }
+}
+
 /// A planar pose: position `p` (world frame) and attitude `θ` (rad, counter-clockwise from
 /// the world X axis).
 #[derive(Clone, Copy, Debug, PartialEq, Default, Serialize, Deserialize)]
@@ -184,10 +205,23 @@ impl Twist {
 /// `φ(p, θ) = Ξ(θ) p` (eq. `eq_phi_def`): the translation part of `log(h)` for
 /// `h = (p, θ)`. The angle is used as given, so that a caller may evaluate the logarithm on
 /// the branch of its choice (any `θ ∈ (−2π, 2π)`); [`log`] uses the principal branch.
+/// `α(θ)` comes from the sine and cosine of `θ` ([`alpha_turned`]), as a step takes it.
 #[inline]
 #[must_use]
 pub fn phi(p: DVec2, theta: f64) -> DVec2 {
-    let a = alpha(theta);
+    phi_turned(p, theta, heading(theta))
+}
+
+/// [`phi`] with `α(θ)` taken from the cosine and sine of `θ` ([`alpha_turned`]).
+#[inline]
+#[must_use]
+pub fn phi_turned(p: DVec2, theta: f64, turn: DVec2) -> DVec2 {
+    xi(p, theta, alpha_turned(theta, turn))
+}
+
+/// `Ξ(θ)·p` with the diagonal `a = α(θ)`.
+#[inline]
+fn xi(p: DVec2, theta: f64, a: f64) -> DVec2 {
     let h = 0.5 * theta;
     DVec2::new(a * p.x + h * p.y, -h * p.x + a * p.y)
 }
@@ -256,6 +290,7 @@ mod tests {
     use super::*;
     use crate::testing::assert_close;
     use crate::testing::test;
+    use std::f64::consts::FRAC_PI_2;
 
     /// 3×3 homogeneous matrix of a pose (eq. `eq_confi_matrix`).
     fn matrix(h: Pose) -> [[f64; 3]; 3] {
@@ -337,6 +372,27 @@ mod tests {
         for t in [0.01, 0.3, 1.0, 2.0, 3.0, -2.5] {
             let paper = t / 2.0 * (1.0 + f64::cos(t)) / f64::sin(t);
             assert_close!(alpha(t), paper, 1e-12);
+        }
+    }
+
+    /// `α` from the cosine and sine of `θ` against `α(θ)` over the branches a continued heading
+    /// error takes (`|θ| ≤ π + BRANCH_HYSTERESIS`), with the turn as a step has it (the
+    /// library's cosine and sine, rounded) and at the points where one form of the cotangent
+    /// would be 0/0 (`±π`) or switches (`±π/2`, the series' bound). Within 1e-14 of `max(1, |α|)`:
+    /// a few ulps of the quotient, and of the rounded cosine and sine over `sin θ` ≥ 1e-3 where
+    /// the series stops.
+    #[test]
+    fn alpha_of_the_turn_is_alpha() {
+        let mut rng = crate::testing::XorShift(0x0A1F_A0F7_0123_4567);
+        let bound = PI + BRANCH_HYSTERESIS;
+        let mut thetas = vec![0.0, PI, -PI, FRAC_PI_2, -FRAC_PI_2, bound, -bound];
+        for t in [ALPHA_SERIES_BELOW, -ALPHA_SERIES_BELOW] {
+            thetas.extend([t * (1.0 - 1e-12), t, t * (1.0 + 1e-12)]);
+        }
+        thetas.extend((0..20_000).map(|_| (2.0 * rng.unit() - 1.0) * bound));
+        for t in thetas {
+            let (a, b) = (alpha_turned(t, heading(t)), alpha(t));
+            assert_close!(a, b, 1e-14 * b.abs().max(1.0));
         }
     }
 

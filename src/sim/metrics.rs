@@ -123,7 +123,11 @@ impl Metrics {
             let inside = at_position && r.heading_error_abs() <= p.tol_heading;
             settle(&mut self.inside_since[i], inside, o.time);
             // The obstacles within the reach, as the robot senses them: the clearance metric
-            // and the violations (a robot inside a disc is within every reach).
+            // and the violations (a robot inside a disc is within every reach). None to look
+            // up in a scene without obstacles.
+            if o.obstacles.is_empty() {
+                continue;
+            }
             for k in o.obstacle_cells.near(r.pose.p) {
                 let c = o.obstacles[k].clearance(r.pose.p);
                 if c <= reach {
@@ -222,7 +226,9 @@ impl Metrics {
                 settle(since, inside, time);
                 let mut closest = f64::INFINITY;
                 let mut inside_a_disc = false;
-                for k in o.obstacle_cells.near(r.pose.p) {
+                // None to look up in a scene without obstacles.
+                let candidates = (!o.obstacles.is_empty()).then(|| o.obstacle_cells.near(r.pose.p));
+                for k in candidates.into_iter().flatten() {
                     let c = o.obstacles[k].clearance(r.pose.p);
                     if c <= reach {
                         closest = closest.min(c);

@@ -32,17 +32,15 @@ pub mod smoothness;
 pub use report::{Report, RobotReport};
 pub use run::{run, run_recorded, run_with, Sample};
 
-use crate::controller::{evaluate_facing, Evaluation};
+use crate::controller::{evaluate_facing, Evaluation, Facing};
 use crate::grid::{Neighbours, ObstacleCells};
 use crate::obstacle::Obstacle;
 use crate::params::{Avoidance, Params};
 use crate::safety;
 use crate::scenario::Scenario;
-#[cfg(not(target_arch = "wasm32"))]
-use crate::se2::unrotate_by;
-use crate::se2::{continue_branch, heading, wrap_angle, Pose};
+use crate::se2::{continue_branch, heading, unrotate_by, wrap_angle, Pose};
 use crate::swarm::{at_rest_beside, cluster_reach, pair_range, Neighbour};
-use crate::unicycle::integrate_along;
+use crate::unicycle::{integrate_along, turned};
 use crate::Command;
 use glam::DVec2;
 use metrics::{Metrics, Observed};
@@ -147,10 +145,12 @@ pub struct Simulation {
     chords: Vec<DVec2>,
     speeds: Vec<f64>,
     // Each robot's goal attitude as a unit vector (`heading(goal.theta)`), by which its error
-    // pose rotates at every step: the goal changes only in `place_robot`. Natively only: the
-    // wasm module has no room in its size budget for it, and takes the sine and cosine again.
-    #[cfg(not(target_arch = "wasm32"))]
+    // pose and its heading error rotate at every step: the goal changes only in `place_robot`.
     goal_headings: Vec<DVec2>,
+    // Each robot's heading `(cos θ, sin θ)`: taken from `θ` when the robot is placed, and then
+    // turned by each step's turn `ω·dt` (`unicycle::turned`) rather than taken again, so that
+    // a step takes no sine or cosine of the heading (see `step_here`).
+    headings: Vec<DVec2>,
 }
 
 impl Simulation {
@@ -201,13 +201,11 @@ impl Simulation {
             commands: vec![Command::default(); n],
             chords: vec![DVec2::ZERO; n],
             speeds: vec![0.0; n],
-            #[cfg(not(target_arch = "wasm32"))]
             goal_headings: Vec::new(),
+            headings: Vec::new(),
         };
-        #[cfg(not(target_arch = "wasm32"))]
-        {
-            sim.goal_headings = sim.robots.iter().map(|r| heading(r.goal.theta)).collect();
-        }
+        sim.goal_headings = sim.robots.iter().map(|r| heading(r.goal.theta)).collect();
+        sim.headings = sim.robots.iter().map(|r| heading(r.pose.theta)).collect();
         sim.build_obstacle_cells();
         // Room for every obstacle to be sensed (`Scratch::obstacles`).
         sim.scratch.obstacles.reserve(sim.obstacles.len());
@@ -433,8 +431,8 @@ impl Simulation {
     /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
     ///
     /// `advanced` is `Some` when the step's integration has copied the snapshot's speeds
-    /// already, and holds whether no robot moved more than half the lists' skin (see
-    /// [`Self::find_neighbours`]); `None` does both here.
+    /// already (`step_here`), and holds whether no robot moved more than half the lists' skin
+    /// (see [`Self::find_neighbours`]); `None` does both here (a new simulation, an edit).
     fn evaluate_all(&mut self, advanced: Option<bool>) {
         // Every robot sees the speeds of the same snapshot, whatever the loop order.
         if advanced.is_none() {
@@ -585,13 +583,21 @@ impl Simulation {
             p: self.error_position(i),
             theta: me.heading_error,
         };
-        // The heading's sine and cosine, once for the controller and the barrier.
-        let h = heading(me.pose.theta);
-        // The sensed obstacles, found once for the controller's passes and the barrier's.
+        // The heading, for the controller and the barrier, and the heading error's cosine and
+        // sine, for the log map: the heading rotated back by the goal's.
+        let h = self.headings[i];
+        let facing = Facing {
+            heading: h,
+            error: unrotate_by(self.goal_headings[i], h),
+        };
+        // The sensed obstacles, found once for the controller's passes and the barrier's (none
+        // to look up in a scene without obstacles, a crowd's).
         let sensed = &mut scratch.obstacles;
         sensed.clear();
-        sensed.extend(self.sensed_obstacles(me.pose.p));
-        let mut e = self.evaluate_facing(me.pose, h, err, self.speeds[i], near, sensed);
+        if !self.obstacles.is_empty() {
+            sensed.extend(self.sensed_obstacles(me.pose.p));
+        }
+        let mut e = self.evaluate_facing(me.pose, facing, err, self.speeds[i], near, sensed);
         let sensed = sensed.iter().map(|&k| &self.obstacles[k as usize]);
         // The neighbours the barrier can bind on at this speed (the others change nothing).
         let binding = safety::neighbour_reach(&self.params, e.command.v);
@@ -614,15 +620,12 @@ impl Simulation {
         (e, chord)
     }
 
-    /// Robot `i`'s `pose.error_to(goal).p`: natively with its goal's sine and cosine taken
-    /// once (`goal_headings`), the same bits.
+    /// Robot `i`'s `pose.error_to(goal).p`, with its goal's sine and cosine taken once
+    /// (`goal_headings`): the same bits.
     #[inline]
     fn error_position(&self, i: usize) -> DVec2 {
         let r = &self.robots[i];
-        #[cfg(not(target_arch = "wasm32"))]
-        return unrotate_by(self.goal_headings[i], r.pose.p - r.goal.p);
-        #[cfg(target_arch = "wasm32")]
-        r.pose.error_to(r.goal).p
+        unrotate_by(self.goal_headings[i], r.pose.p - r.goal.p)
     }
 
     /// Evaluates every robot on the threads of rayon's pool, in chunks, each with its own
@@ -726,7 +729,14 @@ impl Simulation {
     ) -> Evaluation {
         obstacles.clear();
         obstacles.extend(self.sensed_obstacles(pose.p));
-        self.evaluate_facing(pose, heading(pose.theta), err, speed, neighbours, obstacles)
+        self.evaluate_facing(
+            pose,
+            Facing::of(pose.theta, err.theta),
+            err,
+            speed,
+            neighbours,
+            obstacles,
+        )
     }
 
     /// The obstacles a robot at `p` senses: those whose surface is within `R_s`, as indices in
@@ -739,14 +749,14 @@ impl Simulation {
             .map(|k| k as u32)
     }
 
-    /// [`Self::evaluate_at`] with the heading `h` of `pose` taken by the caller
+    /// [`Self::evaluate_at`] with the heading and heading error of `pose` taken by the caller
     /// ([`evaluate_facing`]) and the obstacles it senses found already
     /// ([`Self::sensed_obstacles`]).
     #[inline(never)]
     fn evaluate_facing(
         &self,
         pose: Pose,
-        h: DVec2,
+        facing: Facing,
         err: Pose,
         speed: f64,
         neighbours: &[Neighbour],
@@ -755,7 +765,7 @@ impl Simulation {
         evaluate_facing(
             &self.params,
             pose,
-            h,
+            facing,
             err,
             speed,
             sensed.iter().map(|&k| &self.obstacles[k as usize]),
@@ -782,9 +792,17 @@ impl Simulation {
     /// [`Self::step`] on the calling thread.
     #[cfg_attr(target_arch = "wasm32", inline(always))]
     fn step_here(&mut self) {
-        let dt = self.dt;
-        let advance = |((r, c), chord): ((&mut Robot, &Command), &DVec2)| {
+        let (dt, half, was) = (self.dt, self.half_skin(), &self.positions[..]);
+        // The integration also copies the snapshot's speeds and tests the lists' freshness,
+        // robot by robot, rather than in passes of their own: on threads, two serial passes
+        // fewer, during which the other threads would fall asleep and after which they would
+        // have to be woken (measured at 10,000 robots, two threads against one, six runs each:
+        // 0.65–0.70 with those passes apart, 0.55–0.64 with them here); on one thread, two
+        // passes fewer over the robots.
+        let advance = |(i, ((((r, c), chord), h), speed)): (usize, Advanced<'_>)| {
+            *speed = r.last.command.v.abs();
             r.pose = integrate_along(r.pose, *c, dt, *chord);
+            *h = turned(*h, c.omega, dt);
             // Continued while the robot follows its goal field; back on the principal branch
             // while it circles robots, where the attitude feedback is faded out and the heading
             // error could otherwise run on to where the continued field points away from the
@@ -794,46 +812,39 @@ impl Simulation {
             } else {
                 continue_branch(r.heading_error, r.pose.theta, r.goal.theta)
             };
+            was.get(i).is_some_and(|&w| moved_within(w, r.pose.p, half))
         };
-        // Set on threads only, which the wasm build has not.
-        #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
-        let mut advanced = None;
-        if self.threaded() {
-            // On threads the integration also copies the snapshot's speeds and tests the
-            // lists' freshness, robot by robot: two serial passes fewer, during which the other
-            // threads would fall asleep and after which they would have to be woken (measured
-            // at 10,000 robots, two threads against one, six runs each: 0.65–0.70 with those
-            // passes apart, 0.55–0.64 with them here).
+        // No threads in the wasm build, whose block is the serial pass alone.
+        #[cfg_attr(target_arch = "wasm32", allow(unused_labels))]
+        let none_moved = 'advanced: {
             #[cfg(not(target_arch = "wasm32"))]
-            {
+            if self.threaded() {
                 use rayon::prelude::*;
-                let (half, was) = (self.half_skin(), &self.positions[..]);
-                let none_moved = self
+                break 'advanced self
                     .robots
                     .par_iter_mut()
                     .zip(&self.commands[..])
                     .zip(&self.chords[..])
+                    .zip(&mut self.headings[..])
                     .zip(&mut self.speeds[..])
                     .enumerate()
                     .with_min_len(CHEAP_CHUNK)
-                    .map(|(i, (((r, c), chord), speed))| {
-                        *speed = r.last.command.v.abs();
-                        advance(((&mut *r, c), chord));
-                        was.get(i).is_some_and(|&w| moved_within(w, r.pose.p, half))
-                    })
+                    .map(advance)
                     .reduce(|| true, |a, b| a && b);
-                advanced = Some(none_moved);
             }
-        } else {
             self.robots
                 .iter_mut()
                 .zip(&self.commands)
                 .zip(&self.chords)
-                .for_each(advance);
-        }
+                .zip(&mut self.headings)
+                .zip(&mut self.speeds)
+                .enumerate()
+                .map(advance)
+                .fold(true, |a, b| a & b)
+        };
         self.steps += 1;
         self.time = self.steps as f64 * self.dt;
-        self.evaluate_all(advanced);
+        self.evaluate_all(Some(none_moved));
         self.observe();
     }
 
@@ -891,10 +902,8 @@ impl Simulation {
         }
         let was = self.robots[i].pose.p;
         self.robots[i] = Robot::at(pose, goal);
-        #[cfg(not(target_arch = "wasm32"))]
-        {
-            self.goal_headings[i] = heading(self.robots[i].goal.theta);
-        }
+        self.goal_headings[i] = heading(self.robots[i].goal.theta);
+        self.headings[i] = heading(self.robots[i].pose.theta);
         let now = self.robots[i].pose.p;
         if now == was {
             // Only robot `i` depends on its own goal and heading.
@@ -1052,6 +1061,13 @@ pub const PARALLEL_FROM: usize = 2048;
 /// robots 0.76–0.80 with 1,024, 0.62–0.65 with 256.
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) const CHEAP_CHUNK: usize = 256;
+
+/// A robot's slots as the step's integration advances them (`Simulation::step_here`): its
+/// state, command, chord, heading and snapshot speed.
+type Advanced<'a> = (
+    (((&'a mut Robot, &'a Command), &'a DVec2), &'a mut DVec2),
+    &'a mut f64,
+);
 
 /// Stores a robot's evaluation and the chord of its step in its slots: its state's `last`, its
 /// command and its chord.
