@@ -71,15 +71,22 @@ impl SpeedLimits {
     #[inline]
     fn keep(&mut self, u: DVec2, c: DVec2, dt: f64, budget: f64) {
         let along = u.dot(c) * dt; // d(u·Δp)/dv
+                                   // The bound `budget / −along` on one side and `−budget / along` on the other are both
+                                   // `−(budget / along)`, bit for bit (a division rounds its magnitude alike whatever the
+                                   // signs).
+        self.keep_bound(along, -(budget / along), dt);
+    }
+
+    /// [`Self::keep`] with its bound `−(budget / along)` taken (`limits_of_two` takes two
+    /// at once).
+    #[inline]
+    fn keep_bound(&mut self, along: f64, bound: f64, dt: f64) {
         let tol = ALONG_ROUND_OFF * dt;
-        // The bound `budget / −along` on one side and `−budget / along` on the other are both
-        // `−(budget / along)`, bit for bit (a division rounds its magnitude alike whatever the
-        // signs). Taken either way and kept by selects, without a branch to mispredict (which
-        // side a neighbour bounds is a coin toss in a crowd); selects rather than
+        // The bound taken either way and kept by selects, without a branch to mispredict
+        // (which side a neighbour bounds is a coin toss in a crowd); selects rather than
         // `f64::min`/`max`, which are calls in wasm (to `fmin`/`fmax`, for their rule on NaN):
         // the same bits, since a bound kept is never NaN and each side has zeros of one sign
         // only (`hi` from `+0` budgets over positive divisors, `lo` from their negation).
-        let bound = -(budget / along);
         self.hi = if (along < -tol) & (bound < self.hi) {
             bound
         } else {
@@ -320,8 +327,12 @@ impl Constraints {
     pub fn limits_of_two(&self, a: DVec2, b: DVec2, dt: f64) -> (SpeedLimits, SpeedLimits) {
         let (mut along_a, mut along_b) = (SpeedLimits::FREE, SpeedLimits::FREE);
         for &(u, budget) in &self.items {
-            along_a.keep(u, a, dt, budget);
-            along_b.keep(u, b, dt, budget);
+            // Both bounds in one division of pairs (the same IEEE division in each lane, so
+            // the same bits as `keep`'s): the barrier's loop waits on its divisions.
+            let along = DVec2::new(u.dot(a) * dt, u.dot(b) * dt);
+            let bound = -(DVec2::splat(budget) / along);
+            along_a.keep_bound(along.x, bound.x, dt);
+            along_b.keep_bound(along.y, bound.y, dt);
         }
         (along_a, along_b)
     }
@@ -354,7 +365,15 @@ fn steer(
     let (held, free_limits) = match field.try_normalize() {
         Some(along) if wanted > 0.0 => {
             let (on_field, on_step) = limits_of_two(along, free_step);
-            ((1.0 - on_field.hi / wanted).max(0.0), on_step)
+            // Not held when the limit is at least the speed wanted (then `hi / wanted ≥ 1`
+            // and the expression below is 0): the usual case, known without waiting on the
+            // division.
+            let held = if on_field.hi >= wanted {
+                0.0
+            } else {
+                (1.0 - on_field.hi / wanted).max(0.0)
+            };
+            (held, on_step)
         }
         _ => (0.0, limits(free_step)),
     };
