@@ -146,12 +146,14 @@ fn constraints<'a>(
     // barrier's `MARGIN` (relative 1e-9) covers that. A neighbour at the robot's very position
     // (`d = 0`) gives no direction and is left out.
     let safe_distance = safe_distance * (1.0 + MARGIN);
-    for q in neighbours {
+    // By `for_each`, which a chain of runs (a simulation's two) folds run by run, without a
+    // test of which run each neighbour comes from.
+    neighbours.into_iter().for_each(|q| {
         let d = p.distance(q);
         if d > 0.0 {
             each((p - q) / d, 0.5 * a * (d - safe_distance).max(0.0));
         }
-    }
+    });
     for o in obstacles {
         let c = p.distance(o.center);
         if c > 0.0 {
