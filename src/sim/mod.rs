@@ -440,17 +440,12 @@ impl Simulation {
     }
 
     /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
+    /// Every robot sees the speeds of the same snapshot, whatever the loop order: the step's
+    /// integration has copied them (`step_here`), and a new simulation's are all 0.
     ///
-    /// `advanced` is `Some` when the step's integration has copied the snapshot's speeds
-    /// already (`step_here`), and holds whether no robot moved more than half the lists' skin
-    /// (see [`Self::find_neighbours`]); `None` does both here (a new simulation, an edit).
+    /// `advanced` is `Some` when the step's integration has also tested whether no robot moved
+    /// more than half the lists' skin (see [`Self::find_neighbours`]); `None` tests it here.
     fn evaluate_all(&mut self, advanced: Option<bool>) {
-        // Every robot sees the speeds of the same snapshot, whatever the loop order.
-        if advanced.is_none() {
-            for (s, r) in self.speeds.iter_mut().zip(&self.robots) {
-                *s = r.last.command.v.abs();
-            }
-        }
         self.find_neighbours(advanced);
         self.sense_all();
         self.scratch.closest2 = f64::INFINITY;
