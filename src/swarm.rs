@@ -142,9 +142,10 @@ pub fn cluster(
             // formation (`squeezed`), by squared distance.
             // By selects, without a branch to mispredict: whether a neighbour is ahead is a
             // coin toss in a crowd, and so is whether it is the nearest so far. A neighbour at
-            // rest beside the robot is looked at out of line (`at_rest_neighbour`): in a
-            // crowd on its way almost none is (in the jam of the crowd of 1,000, one in a
-            // thousand), and the loop keeps its values in registers.
+            // rest beside the robot is looked at out of line, behind a branch
+            // (`at_rest_neighbour`): in a crowd on its way almost none is (in the jam of the
+            // crowd of 1,000, one in a thousand), so the branch is predicted, and the loop
+            // keeps its values in registers.
             // The compiler turns a select of one `f64` into a branch unless its condition is a
             // comparison of floats (`pick` or not): the condition is made one, by giving a
             // neighbour that is no candidate a key that no comparison takes (its exponent's bits

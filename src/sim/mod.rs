@@ -1146,9 +1146,9 @@ pub const PARALLEL_FROM: usize = 2048;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) const CHEAP_CHUNK: usize = 256;
 
-/// On one thread, a step stores its evaluations this many at a time (`evaluate_all`): written
-/// in a buffer that stays in the first-level cache, and stored once a few dozen other robots
-/// have been evaluated since.
+/// A step stores its evaluations this many at a time (`Simulation::evaluate_run`, on one
+/// thread and in each chunk on threads): written in a buffer that stays in the first-level
+/// cache, and stored once a few dozen other robots have been evaluated since.
 #[cfg(not(target_arch = "wasm32"))]
 const STORED_BY: usize = 64;
 
