@@ -132,11 +132,14 @@ pub struct Simulation {
     // than it) or an edit has evaluated some robots since.
     closest2: Option<f64>,
     scratch: Scratch,
-    // The parallel step (native only): whether it is on, and its buffers (one per chunk).
+    // The parallel step (native only): whether it is on, its buffers (one per chunk), and the
+    // evaluations before they are stored.
     #[cfg(not(target_arch = "wasm32"))]
     parallel: bool,
     #[cfg(not(target_arch = "wasm32"))]
     scratches: Vec<Scratch>,
+    #[cfg(not(target_arch = "wasm32"))]
+    evaluated: Vec<(Evaluation, DVec2)>,
     commands: Vec<Command>,
     // Each command's chord (see `safety::filter`).
     chords: Vec<DVec2>,
@@ -193,6 +196,8 @@ impl Simulation {
             parallel: true,
             #[cfg(not(target_arch = "wasm32"))]
             scratches: Vec::new(),
+            #[cfg(not(target_arch = "wasm32"))]
+            evaluated: Vec::new(),
             commands: vec![Command::default(); n],
             chords: vec![DVec2::ZERO; n],
             speeds: vec![0.0; n],
@@ -451,13 +456,31 @@ impl Simulation {
         if !parallel {
             // The buffers taken out of `self` once for all robots, not once per robot.
             let mut scratch = std::mem::take(&mut self.scratch);
-            // Natively as one run (`evaluate_run`: stored a few dozen at a time, as each chunk
-            // on threads); the wasm build stores each as it comes, with less code.
+            // Natively into a buffer first, each evaluation written in its slot, and then
+            // stored, as on threads: copied to its robot right after it was written, an
+            // evaluation is read in other pieces than it was written in, and each read across
+            // two writes waits for both to reach the cache (in open space about 5 % of the
+            // step's time). The wasm build stores each as it comes, with less code.
             #[cfg(not(target_arch = "wasm32"))]
             {
-                let mut slots = self.take_slots();
-                self.evaluate_run(0, slots.as_run(), &mut scratch);
-                self.put_slots(slots);
+                let mut out = std::mem::take(&mut self.evaluated);
+                let n = self.robots.len();
+                out.resize(n.min(STORED_BY), (Evaluation::default(), DVec2::ZERO));
+                for start in (0..n).step_by(STORED_BY) {
+                    let end = (start + STORED_BY).min(n);
+                    for (i, slot) in (start..end).zip(&mut out) {
+                        self.evaluation(i, &mut scratch, slot);
+                    }
+                    for (((r, command), chord), evaluated) in self.robots[start..end]
+                        .iter_mut()
+                        .zip(&mut self.commands[start..end])
+                        .zip(&mut self.chords[start..end])
+                        .zip(&out)
+                    {
+                        put((r, command, chord), evaluated);
+                    }
+                }
+                self.evaluated = out;
             }
             #[cfg(target_arch = "wasm32")]
             for i in 0..self.robots.len() {
@@ -500,8 +523,7 @@ impl Simulation {
         // the processor forwards each piece from its store (a read across two stores waits for
         // both to reach the cache: in open space a twentieth of the step's time went there).
         let mut evaluated = (Evaluation::default(), DVec2::ZERO);
-        let me = self.robots[i];
-        self.evaluation(i, &me, scratch, &mut evaluated);
+        self.evaluation(i, scratch, &mut evaluated);
         put(
             (
                 &mut self.robots[i],
@@ -518,20 +540,14 @@ impl Simulation {
     /// doc). It reads the snapshot only, so robots can be evaluated in any order or at once.
     // Inlined into its one caller in the wasm build (which has no parallel step): smaller.
     #[cfg_attr(target_arch = "wasm32", inline(always))]
-    fn evaluation(
-        &self,
-        i: usize,
-        me: &Robot,
-        scratch: &mut Scratch,
-        out: &mut (Evaluation, DVec2),
-    ) {
+    fn evaluation(&self, i: usize, scratch: &mut Scratch, out: &mut (Evaluation, DVec2)) {
         let rs = self.params.sense_radius;
         let listed = self.listed();
         // The grid's lists hold the robots within their reach: when that is at most the sensing
         // radius, they are the sensed robots that can change the command (see `reach`).
         let r = if listed { self.reach.min(rs) } else { rs };
         let r2 = r * r;
-        let me = *me;
+        let me = self.robots[i];
         let neighbours = &mut scratch.neighbours;
         let p = me.pose.p;
         // The sensed robots within the controller's reach, as a count of the buffer's first
@@ -598,7 +614,7 @@ impl Simulation {
         };
         let (near, far) = (&neighbours[..count], &neighbours[others]);
         let err = Pose {
-            p: self.error_position(i, &me),
+            p: self.error_position(i),
             theta: me.heading_error,
         };
         // The heading, for the controller and the barrier, and the heading error's cosine and
@@ -643,7 +659,8 @@ impl Simulation {
     /// Robot `i`'s `pose.error_to(goal).p`, with its goal's sine and cosine taken once
     /// (`goal_headings`): the same bits.
     #[inline]
-    fn error_position(&self, i: usize, r: &Robot) -> DVec2 {
+    fn error_position(&self, i: usize) -> DVec2 {
+        let r = &self.robots[i];
         unrotate_by(self.goal_headings[i], r.pose.p - r.goal.p)
     }
 
@@ -661,89 +678,34 @@ impl Simulation {
         // A few chunks per thread, so that one slow chunk does not hold the others up.
         let chunks = 4 * rayon::current_num_threads();
         let size = n.div_ceil(chunks);
+        let mut out = std::mem::take(&mut self.evaluated);
+        out.resize(n, (Evaluation::default(), DVec2::ZERO));
         let mut scratches = std::mem::take(&mut self.scratches);
         scratches.resize_with(chunks, Scratch::default);
         for s in &mut scratches {
             s.closest2 = f64::INFINITY;
         }
-        // Each chunk evaluates and stores its own robots, as one thread does them all
-        // (`evaluate_run`): no pass of its own to store them.
-        let mut slots = self.take_slots();
         let this = &*self;
-        slots
-            .robots
-            .par_chunks_mut(size)
-            .zip(slots.commands.par_chunks_mut(size))
-            .zip(slots.chords.par_chunks_mut(size))
+        out.par_chunks_mut(size)
             .zip(scratches.par_iter_mut())
             .enumerate()
-            .for_each(|(k, (((robots, commands), chords), scratch))| {
-                this.evaluate_run(k * size, (robots, commands, chords), scratch);
+            .for_each(|(k, (chunk, scratch))| {
+                for (slot, i) in chunk.iter_mut().zip(k * size..) {
+                    this.evaluation(i, scratch, slot);
+                }
             });
-        self.put_slots(slots);
+        (
+            &mut self.robots[..],
+            &mut self.commands[..],
+            &mut self.chords[..],
+        )
+            .into_par_iter()
+            .zip(&out[..])
+            .with_min_len(CHEAP_CHUNK)
+            .for_each(|(slots, evaluated)| put(slots, evaluated));
+        self.evaluated = out;
         self.scratches = scratches;
         true
-    }
-
-    /// The robots' states, commands and chords, taken out so that the simulation can be read
-    /// while they are written ([`Self::evaluate_run`]); [`Self::put_slots`] puts them back.
-    /// An evaluation reads its own robot's state only, from the run it writes to.
-    #[cfg(not(target_arch = "wasm32"))]
-    fn take_slots(&mut self) -> Slots {
-        Slots {
-            robots: std::mem::take(&mut self.robots),
-            commands: std::mem::take(&mut self.commands),
-            chords: std::mem::take(&mut self.chords),
-        }
-    }
-
-    /// Puts back what [`Self::take_slots`] took.
-    #[cfg(not(target_arch = "wasm32"))]
-    fn put_slots(&mut self, slots: Slots) {
-        self.robots = slots.robots;
-        self.commands = slots.commands;
-        self.chords = slots.chords;
-    }
-
-    /// Evaluates the robots of `run`, the first of them robot `start`, and stores their
-    /// evaluations, [`STORED_BY`] at a time: each is written in a buffer that stays in the
-    /// first-level cache and stored once a few dozen others have been evaluated since. Stored
-    /// right after it was written, an evaluation was read in other pieces than it was written
-    /// in, and each read across two writes waited for both to reach the cache (in open space
-    /// about 5 % of the step's time). One thread runs all the robots as one run; on threads,
-    /// each chunk is a run.
-    #[cfg(not(target_arch = "wasm32"))]
-    fn evaluate_run(
-        &self,
-        start: usize,
-        (robots, commands, chords): Run<'_>,
-        scratch: &mut Scratch,
-    ) {
-        let mut stored = std::mem::take(&mut scratch.stored);
-        stored.resize(
-            robots.len().min(STORED_BY),
-            (Evaluation::default(), DVec2::ZERO),
-        );
-        for (k, ((robots, commands), chords)) in robots
-            .chunks_mut(STORED_BY)
-            .zip(commands.chunks_mut(STORED_BY))
-            .zip(chords.chunks_mut(STORED_BY))
-            .enumerate()
-        {
-            let first = start + k * STORED_BY;
-            for ((i, me), slot) in (first..).zip(&*robots).zip(&mut stored) {
-                self.evaluation(i, me, scratch, slot);
-            }
-            for (((r, command), chord), evaluated) in robots
-                .iter_mut()
-                .zip(commands.iter_mut())
-                .zip(chords.iter_mut())
-                .zip(&stored)
-            {
-                put((r, command, chord), evaluated);
-            }
-        }
-        scratch.stored = stored;
     }
 
     /// Whether this step's passes over the robots run on rayon's threads: from
@@ -1146,9 +1108,9 @@ pub const PARALLEL_FROM: usize = 2048;
 #[cfg(not(target_arch = "wasm32"))]
 pub(crate) const CHEAP_CHUNK: usize = 256;
 
-/// A step stores its evaluations this many at a time (`Simulation::evaluate_run`, on one
-/// thread and in each chunk on threads): written in a buffer that stays in the first-level
-/// cache, and stored once a few dozen other robots have been evaluated since.
+/// On one thread, a step stores its evaluations this many at a time (`evaluate_all`): written
+/// in a buffer that stays in the first-level cache, and stored once a few dozen other robots
+/// have been evaluated since.
 #[cfg(not(target_arch = "wasm32"))]
 const STORED_BY: usize = 64;
 
@@ -1183,32 +1145,7 @@ struct Scratch {
     obstacles: Vec<u32>,
     constraints: safety::Constraints,
     closest2: f64,
-    // Evaluations on their way to their robots' slots (`Simulation::evaluate_run`), up to
-    // `STORED_BY` of them.
-    #[cfg(not(target_arch = "wasm32"))]
-    stored: Vec<(Evaluation, DVec2)>,
 }
-
-/// The slots a step's evaluations are stored in, taken out of the simulation while it is
-/// read to evaluate them (`Simulation::take_slots`): the robots' states, commands and chords.
-#[cfg(not(target_arch = "wasm32"))]
-#[derive(Default)]
-struct Slots {
-    robots: Vec<Robot>,
-    commands: Vec<Command>,
-    chords: Vec<DVec2>,
-}
-
-#[cfg(not(target_arch = "wasm32"))]
-impl Slots {
-    fn as_run(&mut self) -> Run<'_> {
-        (&mut self.robots, &mut self.commands, &mut self.chords)
-    }
-}
-
-/// A run of consecutive robots' slots: their states, commands and chords.
-#[cfg(not(target_arch = "wasm32"))]
-type Run<'a> = (&'a mut [Robot], &'a mut [Command], &'a mut [DVec2]);
 
 /// Whether a robot at `now` has moved at most `half` from `was` (see
 /// `Simulation::find_neighbours`).
