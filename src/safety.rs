@@ -70,10 +70,11 @@ impl SpeedLimits {
     /// `u` is the unit vector away from what is avoided, `budget ≥ 0` the allowed approach.
     #[inline]
     fn keep(&mut self, u: DVec2, c: DVec2, dt: f64, budget: f64) {
-        let along = u.dot(c) * dt; // d(u·Δp)/dv
-                                   // The bound `budget / −along` on one side and `−budget / along` on the other are both
-                                   // `−(budget / along)`, bit for bit (a division rounds its magnitude alike whatever the
-                                   // signs).
+        // d(u·Δp)/dv.
+        let along = u.dot(c) * dt;
+        // The bound `budget / −along` on one side and `−budget / along` on the other are both
+        // `−(budget / along)`, bit for bit (a division rounds its magnitude alike whatever the
+        // signs).
         self.keep_bound(along, -(budget / along), dt);
     }
 

@@ -71,9 +71,7 @@ pub fn unrotate_by(h: DVec2, v: DVec2) -> DVec2 {
 #[must_use]
 pub fn alpha(theta: f64) -> f64 {
     if theta.abs() < ALPHA_SERIES_BELOW {
-        let t2 = theta * theta;
-        // θ/2·cot(θ/2) = 1 − θ²/12 − θ⁴/720 − θ⁶/30240 − …
-        1.0 - t2 / 12.0 - t2 * t2 / 720.0
+        alpha_series(theta)
     } else {
         let h = 0.5 * theta;
         let (s, c) = crate::maths::sin_cos(h);
@@ -93,13 +91,21 @@ pub fn alpha(theta: f64) -> f64 {
 pub fn alpha_turned(theta: f64, turn: DVec2) -> f64 {
     let h = 0.5 * theta;
     if theta.abs() < ALPHA_SERIES_BELOW {
-        let t2 = theta * theta;
-        1.0 - t2 / 12.0 - t2 * t2 / 720.0
+        alpha_series(theta)
     } else if turn.x >= 0.0 {
         h * (1.0 + turn.x) / turn.y
     } else {
         h * turn.y / (1.0 - turn.x)
     }
+}
+
+/// `α(θ)` by its series, for `|θ|` below `ALPHA_SERIES_BELOW` ([`alpha`], [`alpha_turned`]):
+/// `θ/2·cot(θ/2) = 1 − θ²/12 − θ⁴/720 − θ⁶/30240 − …`, whose first omitted term is below
+/// 3e-23 there.
+#[inline]
+fn alpha_series(theta: f64) -> f64 {
+    let t2 = theta * theta;
+    1.0 - t2 / 12.0 - t2 * t2 / 720.0
 }
 
 /// A planar pose: position `p` (world frame) and attitude `θ` (rad, counter-clockwise from

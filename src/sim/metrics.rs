@@ -227,13 +227,14 @@ impl Metrics {
                 let mut closest = f64::INFINITY;
                 let mut inside_a_disc = false;
                 // None to look up in a scene without obstacles.
-                let candidates = (!o.obstacles.is_empty()).then(|| o.obstacle_cells.near(r.pose.p));
-                for k in candidates.into_iter().flatten() {
-                    let c = o.obstacles[k].clearance(r.pose.p);
-                    if c <= reach {
-                        closest = closest.min(c);
+                if !o.obstacles.is_empty() {
+                    for k in o.obstacle_cells.near(r.pose.p) {
+                        let c = o.obstacles[k].clearance(r.pose.p);
+                        if c <= reach {
+                            closest = closest.min(c);
+                        }
+                        inside_a_disc |= c < 0.0;
                     }
-                    inside_a_disc |= c < 0.0;
                 }
                 let closest2 = match o.closest2 {
                     Some(_) => f64::INFINITY,
