@@ -28,7 +28,7 @@ use crate::controller::Command;
 use crate::obstacle::Obstacle;
 use crate::params::Params;
 use crate::se2::{heading, Pose};
-use crate::unicycle::chord_from;
+use crate::unicycle::{motion, Motion};
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
 
@@ -233,7 +233,7 @@ pub fn filter<'a>(
     obstacles: impl IntoIterator<Item = &'a Obstacle>,
 ) -> (Command, DVec2) {
     let h = heading(pose.theta);
-    filter_facing(
+    let (c, step) = filter_facing(
         constraints,
         params,
         dt,
@@ -243,12 +243,14 @@ pub fn filter<'a>(
         field,
         neighbours,
         obstacles,
-    )
+    );
+    (c, step.chord)
 }
 
 /// [`filter`] of a robot at `p` with the heading `h = (cos θ, sin θ)` its controller has taken
 /// already ([`crate::controller::evaluate_facing`]): the same command, and no sine or cosine
-/// of its own.
+/// of its own. Returned with the step's whole [`Motion`]: its chord, and the heading at its
+/// end, which a simulation keeps for the next step.
 #[must_use]
 #[allow(clippy::too_many_arguments)]
 pub fn filter_facing<'a>(
@@ -261,9 +263,9 @@ pub fn filter_facing<'a>(
     field: DVec2,
     neighbours: impl IntoIterator<Item = DVec2>,
     obstacles: impl IntoIterator<Item = &'a Obstacle>,
-) -> (Command, DVec2) {
+) -> (Command, Motion) {
     let Some(rate) = params.barrier_rate else {
-        return (c, chord_from(h, c.omega, dt));
+        return (c, motion(h, c.omega, dt));
     };
     let safe = 2.0 * params.safe_radius;
     constraints.derive(p, rate * dt, safe, neighbours, obstacles);
@@ -357,17 +359,17 @@ fn steer(
     field: DVec2,
     limits: impl Fn(DVec2) -> SpeedLimits,
     limits_of_two: impl Fn(DVec2, DVec2) -> (SpeedLimits, SpeedLimits),
-) -> (Command, DVec2) {
+) -> (Command, Motion) {
     let turn = |held: f64| {
         let turned = c.omega + params.k_a * held * FRAC_PI_2;
         params.omega_max.map_or(turned, |m| turned.clamp(-m, m))
     };
     let free = turn(0.0);
-    let free_step = chord_from(h, free, dt);
+    let free_step = motion(h, free, dt);
     let wanted = (params.k_v * field.length()).min(params.avoid_speed);
     let (held, free_limits) = match field.try_normalize() {
         Some(along) if wanted > 0.0 => {
-            let (on_field, on_step) = limits_of_two(along, free_step);
+            let (on_field, on_step) = limits_of_two(along, free_step.chord);
             // Not held when the limit is at least the speed wanted (then `hi / wanted ≥ 1`
             // and the expression below is 0): the usual case, known without waiting on the
             // division.
@@ -378,7 +380,7 @@ fn steer(
             };
             (held, on_step)
         }
-        _ => (0.0, limits(free_step)),
+        _ => (0.0, limits(free_step.chord)),
     };
     if held == 0.0 {
         return (
@@ -390,8 +392,8 @@ fn steer(
         );
     }
     let omega = turn(held);
-    let step = chord_from(h, omega, dt);
-    let v = limits(step).clamp(c.v);
+    let step = motion(h, omega, dt);
+    let v = limits(step.chord).clamp(c.v);
     (Command { v, omega }, step)
 }
 

@@ -20,8 +20,7 @@ const SERIES_BELOW: f64 = 0.125;
 /// series, whose first omitted terms, `x¹⁰/39916800` and `x¹²/479001600`, are below 2.4e-17
 /// and 3e-20 there: a fifth of an ulp of 1 and less, so both are within the round-off of the
 /// library's (an ulp or two, `half_turn_is_the_sine_and_cosine`).
-// One copy in the wasm module (the barrier's chords and the step's turn of the heading call
-// it): smaller.
+// One copy in the wasm module (the barrier's three motions call it): smaller.
 #[cfg_attr(not(target_arch = "wasm32"), inline)]
 #[cfg_attr(target_arch = "wasm32", inline(never))]
 #[must_use]
@@ -61,9 +60,36 @@ pub fn chord(theta: f64, omega: f64, dt: f64) -> DVec2 {
 #[inline]
 #[must_use]
 pub fn chord_from(h: DVec2, omega: f64, dt: f64) -> DVec2 {
+    motion(h, omega, dt).chord
+}
+
+/// What holding a turn rate `ω` for `dt` does to a unicycle with heading `h`
+/// ([`motion`]): the chord of its arc ([`chord_from`]) and its heading at the end
+/// ([`turned`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Motion {
+    /// The chord per unit of `v·dt`.
+    pub chord: DVec2,
+    /// The heading after the step, `(cos, sin)(θ + ω·dt)`.
+    pub heading: DVec2,
+}
+
+/// [`chord_from`] and [`turned`] with one half turn: the mean heading `m` is `h` turned by the
+/// half turn, the chord is `sinc(ω·dt/2)·m` and the heading after the step is `m` turned by
+/// the half turn again. The same bits as the two functions (each is this one's field): the
+/// barrier takes the chord, and a step keeps the heading with it, so that the step's
+/// integration need not take the half turn's series again.
+#[inline]
+#[must_use]
+pub fn motion(h: DVec2, omega: f64, dt: f64) -> Motion {
     let half = 0.5 * omega * dt;
     let (sinc, cos) = half_turn(half);
-    sinc * DVec2::new(cos, sinc * half).rotate(h)
+    let r = DVec2::new(cos, sinc * half);
+    let mean = r.rotate(h);
+    Motion {
+        chord: sinc * mean,
+        heading: r.rotate(mean),
+    }
 }
 
 /// The heading `h = (cos θ, sin θ)` ([`heading`]) after a step's turn `ω·dt`: `h` rotated
@@ -76,10 +102,7 @@ pub fn chord_from(h: DVec2, omega: f64, dt: f64) -> DVec2 {
 #[inline]
 #[must_use]
 pub fn turned(h: DVec2, omega: f64, dt: f64) -> DVec2 {
-    let half = 0.5 * omega * dt;
-    let (sinc, cos) = half_turn(half);
-    let r = DVec2::new(cos, sinc * half);
-    r.rotate(r.rotate(h))
+    motion(h, omega, dt).heading
 }
 
 /// Exact pose after holding `c` for `dt` from `pose` (see [`chord`]).

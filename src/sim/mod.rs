@@ -40,7 +40,7 @@ use crate::safety;
 use crate::scenario::Scenario;
 use crate::se2::{continue_branch, heading, unrotate_by, wrap_angle, Pose};
 use crate::swarm::{at_rest_beside, cluster_reach, pair_range, Neighbour};
-use crate::unicycle::{integrate_along, turned};
+use crate::unicycle::{integrate_along, Motion};
 use crate::Command;
 use glam::DVec2;
 use metrics::{Metrics, Observed};
@@ -139,7 +139,7 @@ pub struct Simulation {
     #[cfg(not(target_arch = "wasm32"))]
     scratches: Vec<Scratch>,
     #[cfg(not(target_arch = "wasm32"))]
-    evaluated: Vec<(Evaluation, DVec2)>,
+    evaluated: Vec<(Evaluation, Motion)>,
     commands: Vec<Command>,
     // Each command's chord (see `safety::filter`).
     chords: Vec<DVec2>,
@@ -148,9 +148,14 @@ pub struct Simulation {
     // pose and its heading error rotate at every step: the goal changes only in `place_robot`.
     goal_headings: Vec<DVec2>,
     // Each robot's heading `(cos θ, sin θ)`: taken from `θ` when the robot is placed, and then
-    // turned by each step's turn `ω·dt` (`unicycle::turned`) rather than taken again, so that
-    // a step takes no sine or cosine of the heading (see `step_here`).
+    // turned by each step's turn `ω·dt` rather than taken again, so that a step takes no sine
+    // or cosine of the heading (see `step_here`).
     headings: Vec<DVec2>,
+    // Each robot's heading after its command's step (`unicycle::turned`): the barrier takes it
+    // with the step's chord (`unicycle::motion`), and it is stored with the chord. Like the
+    // chords, it always belongs to the robot's current command; a step swaps it with
+    // `headings` once the robots have moved, and its evaluations fill it again.
+    headings_after: Vec<DVec2>,
 }
 
 impl Simulation {
@@ -200,6 +205,7 @@ impl Simulation {
             evaluated: Vec::new(),
             commands: vec![Command::default(); n],
             chords: vec![DVec2::ZERO; n],
+            headings_after: vec![DVec2::ZERO; n],
             speeds: vec![0.0; n],
             goal_headings: Vec::new(),
             headings: Vec::new(),
@@ -465,19 +471,20 @@ impl Simulation {
             {
                 let mut out = std::mem::take(&mut self.evaluated);
                 let n = self.robots.len();
-                out.resize(n.min(STORED_BY), (Evaluation::default(), DVec2::ZERO));
+                out.resize(n.min(STORED_BY), (Evaluation::default(), Motion::default()));
                 for start in (0..n).step_by(STORED_BY) {
                     let end = (start + STORED_BY).min(n);
                     for (i, slot) in (start..end).zip(&mut out) {
                         self.evaluation(i, &mut scratch, slot);
                     }
-                    for (((r, command), chord), evaluated) in self.robots[start..end]
+                    for ((((r, command), chord), after), evaluated) in self.robots[start..end]
                         .iter_mut()
                         .zip(&mut self.commands[start..end])
                         .zip(&mut self.chords[start..end])
+                        .zip(&mut self.headings_after[start..end])
                         .zip(&out)
                     {
-                        put((r, command, chord), evaluated);
+                        put((r, command, chord, after), evaluated);
                     }
                 }
                 self.evaluated = out;
@@ -522,13 +529,14 @@ impl Simulation {
         // first: the copy then reads the memory in the pieces the evaluation wrote it in, and
         // the processor forwards each piece from its store (a read across two stores waits for
         // both to reach the cache: in open space a twentieth of the step's time went there).
-        let mut evaluated = (Evaluation::default(), DVec2::ZERO);
+        let mut evaluated = (Evaluation::default(), Motion::default());
         self.evaluation(i, scratch, &mut evaluated);
         put(
             (
                 &mut self.robots[i],
                 &mut self.commands[i],
                 &mut self.chords[i],
+                &mut self.headings_after[i],
             ),
             &evaluated,
         );
@@ -540,7 +548,7 @@ impl Simulation {
     /// doc). It reads the snapshot only, so robots can be evaluated in any order or at once.
     // Inlined into its one caller in the wasm build (which has no parallel step): smaller.
     #[cfg_attr(target_arch = "wasm32", inline(always))]
-    fn evaluation(&self, i: usize, scratch: &mut Scratch, out: &mut (Evaluation, DVec2)) {
+    fn evaluation(&self, i: usize, scratch: &mut Scratch, out: &mut (Evaluation, Motion)) {
         let rs = self.params.sense_radius;
         let listed = self.listed();
         // The grid's lists hold the robots within their reach: when that is at most the sensing
@@ -679,7 +687,7 @@ impl Simulation {
         let chunks = 4 * rayon::current_num_threads();
         let size = n.div_ceil(chunks);
         let mut out = std::mem::take(&mut self.evaluated);
-        out.resize(n, (Evaluation::default(), DVec2::ZERO));
+        out.resize(n, (Evaluation::default(), Motion::default()));
         let mut scratches = std::mem::take(&mut self.scratches);
         scratches.resize_with(chunks, Scratch::default);
         for s in &mut scratches {
@@ -698,6 +706,7 @@ impl Simulation {
             &mut self.robots[..],
             &mut self.commands[..],
             &mut self.chords[..],
+            &mut self.headings_after[..],
         )
             .into_par_iter()
             .zip(&out[..])
@@ -845,10 +854,9 @@ impl Simulation {
         // have to be woken (measured at 10,000 robots, two threads against one, six runs each:
         // 0.65–0.70 with those passes apart, 0.55–0.64 with them here); on one thread, two
         // passes fewer over the robots.
-        let advance = |(i, ((((r, c), chord), h), speed)): (usize, Advanced<'_>)| {
+        let advance = |(i, (((r, c), chord), speed)): (usize, Advanced<'_>)| {
             *speed = r.last.command.v.abs();
             r.pose = integrate_along(r.pose, *c, dt, *chord);
-            *h = turned(*h, c.omega, dt);
             // Continued while the robot follows its goal field; back on the principal branch
             // while it circles robots, where the attitude feedback is faded out and the heading
             // error could otherwise run on to where the continued field points away from the
@@ -871,7 +879,6 @@ impl Simulation {
                     .par_iter_mut()
                     .zip(&self.commands[..])
                     .zip(&self.chords[..])
-                    .zip(&mut self.headings[..])
                     .zip(&mut self.speeds[..])
                     .enumerate()
                     .with_min_len(CHEAP_CHUNK)
@@ -882,12 +889,14 @@ impl Simulation {
                 .iter_mut()
                 .zip(&self.commands)
                 .zip(&self.chords)
-                .zip(&mut self.headings)
                 .zip(&mut self.speeds)
                 .enumerate()
                 .map(advance)
                 .fold(true, |a, b| a & b)
         };
+        // Each robot's heading after the step, as its evaluation found it, is now its heading;
+        // the evaluations below fill the other buffer.
+        std::mem::swap(&mut self.headings, &mut self.headings_after);
         self.steps += 1;
         self.time = self.steps as f64 * self.dt;
         self.evaluate_all(Some(none_moved));
@@ -1115,22 +1124,20 @@ pub(crate) const CHEAP_CHUNK: usize = 256;
 const STORED_BY: usize = 64;
 
 /// A robot's slots as the step's integration advances them (`Simulation::step_here`): its
-/// state, command, chord, heading and snapshot speed.
-type Advanced<'a> = (
-    (((&'a mut Robot, &'a Command), &'a DVec2), &'a mut DVec2),
-    &'a mut f64,
-);
+/// state, command, chord and snapshot speed.
+type Advanced<'a> = (((&'a mut Robot, &'a Command), &'a DVec2), &'a mut f64);
 
-/// Stores a robot's evaluation and the chord of its step in its slots: its state's `last`, its
-/// command and its chord.
+/// Stores a robot's evaluation and the motion of its step in its slots: its state's `last`, its
+/// command, its chord and its heading after the step.
 #[inline]
 fn put(
-    (r, command, chord): (&mut Robot, &mut Command, &mut DVec2),
-    &(e, ch): &(Evaluation, DVec2),
+    (r, command, chord, after): (&mut Robot, &mut Command, &mut DVec2, &mut DVec2),
+    &(e, m): &(Evaluation, Motion),
 ) {
     r.last = e;
     *command = e.command;
-    *chord = ch;
+    *chord = m.chord;
+    *after = m.heading;
 }
 
 /// A robot evaluation's buffers, reused from robot to robot: its sensed neighbours and
