@@ -138,8 +138,6 @@ pub struct Simulation {
     parallel: bool,
     #[cfg(not(target_arch = "wasm32"))]
     scratches: Vec<Scratch>,
-    #[cfg(not(target_arch = "wasm32"))]
-    evaluated: Vec<(Evaluation, Motion)>,
     commands: Vec<Command>,
     // Each command's chord (see `safety::filter`).
     chords: Vec<DVec2>,
@@ -201,8 +199,6 @@ impl Simulation {
             parallel: true,
             #[cfg(not(target_arch = "wasm32"))]
             scratches: Vec::new(),
-            #[cfg(not(target_arch = "wasm32"))]
-            evaluated: Vec::new(),
             commands: vec![Command::default(); n],
             chords: vec![DVec2::ZERO; n],
             headings_after: vec![DVec2::ZERO; n],
@@ -462,32 +458,15 @@ impl Simulation {
         if !parallel {
             // The buffers taken out of `self` once for all robots, not once per robot.
             let mut scratch = std::mem::take(&mut self.scratch);
-            // Natively into a buffer first, each evaluation written in its slot, and then
-            // stored, as on threads: copied to its robot right after it was written, an
-            // evaluation is read in other pieces than it was written in, and each read across
-            // two writes waits for both to reach the cache (in open space about 5 % of the
-            // step's time). The wasm build stores each as it comes, with less code.
+            // Natively in runs that store their evaluations a few dozen at a time
+            // (`evaluate_run`), as on threads. The wasm build stores each as it comes, with
+            // less code.
             #[cfg(not(target_arch = "wasm32"))]
             {
-                let mut out = std::mem::take(&mut self.evaluated);
                 let n = self.robots.len();
-                out.resize(n.min(STORED_BY), (Evaluation::default(), Motion::default()));
-                for start in (0..n).step_by(STORED_BY) {
-                    let end = (start + STORED_BY).min(n);
-                    for (i, slot) in (start..end).zip(&mut out) {
-                        self.evaluation(i, &mut scratch, slot);
-                    }
-                    for ((((r, command), chord), after), evaluated) in self.robots[start..end]
-                        .iter_mut()
-                        .zip(&mut self.commands[start..end])
-                        .zip(&mut self.chords[start..end])
-                        .zip(&mut self.headings_after[start..end])
-                        .zip(&out)
-                    {
-                        put((r, command, chord, after), evaluated);
-                    }
-                }
-                self.evaluated = out;
+                let mut slots = self.take_slots();
+                self.evaluate_run(0, slots.run(0..n), &mut scratch);
+                self.put_slots(slots);
             }
             #[cfg(target_arch = "wasm32")]
             for i in 0..self.robots.len() {
@@ -530,7 +509,8 @@ impl Simulation {
         // the processor forwards each piece from its store (a read across two stores waits for
         // both to reach the cache: in open space a twentieth of the step's time went there).
         let mut evaluated = (Evaluation::default(), Motion::default());
-        self.evaluation(i, scratch, &mut evaluated);
+        let me = self.robots[i];
+        self.evaluation(i, &me, scratch, &mut evaluated);
         put(
             (
                 &mut self.robots[i],
@@ -547,15 +527,23 @@ impl Simulation {
     /// the chord of its step. The one place where the method enters the loop (see the module
     /// doc). It reads the snapshot only, so robots can be evaluated in any order or at once.
     // Inlined into its one caller in the wasm build (which has no parallel step): smaller.
+    // Natively out of line: inlined into `evaluate_run`, it took 2 % more instructions in the
+    // jam, and 4.5 % more where it was inlined before.
     #[cfg_attr(target_arch = "wasm32", inline(always))]
-    fn evaluation(&self, i: usize, scratch: &mut Scratch, out: &mut (Evaluation, Motion)) {
+    #[cfg_attr(not(target_arch = "wasm32"), inline(never))]
+    fn evaluation(
+        &self,
+        i: usize,
+        me: &Robot,
+        scratch: &mut Scratch,
+        out: &mut (Evaluation, Motion),
+    ) {
         let rs = self.params.sense_radius;
         let listed = self.listed();
         // The grid's lists hold the robots within their reach: when that is at most the sensing
         // radius, they are the sensed robots that can change the command (see `reach`).
         let r = if listed { self.reach.min(rs) } else { rs };
         let r2 = r * r;
-        let me = self.robots[i];
         let neighbours = &mut scratch.neighbours;
         let p = me.pose.p;
         // The sensed robots within the controller's reach, as a count of the buffer's first
@@ -622,7 +610,7 @@ impl Simulation {
         };
         let (near, far) = (&neighbours[..count], &neighbours[others]);
         let err = Pose {
-            p: self.error_position(i),
+            p: self.error_position(i, me),
             theta: me.heading_error,
         };
         // The heading, for the controller and the barrier, and the heading error's cosine and
@@ -667,15 +655,68 @@ impl Simulation {
     /// Robot `i`'s `pose.error_to(goal).p`, with its goal's sine and cosine taken once
     /// (`goal_headings`): the same bits.
     #[inline]
-    fn error_position(&self, i: usize) -> DVec2 {
-        let r = &self.robots[i];
-        unrotate_by(self.goal_headings[i], r.pose.p - r.goal.p)
+    fn error_position(&self, i: usize, me: &Robot) -> DVec2 {
+        unrotate_by(self.goal_headings[i], me.pose.p - me.goal.p)
+    }
+
+    /// Evaluates the robots `base..` whose slots `run` holds (taken out of the simulation,
+    /// which the evaluations read meanwhile), with the buffers of `scratch`. Each evaluation is
+    /// written in a buffer of [`STORED_BY`] that stays in the first-level cache, and the
+    /// buffer is stored once full: copied to its robot right after it was written, an
+    /// evaluation is read in other pieces than it was written in, and each read across two
+    /// writes waits for both to reach the cache (in open space about 5 % of the step's time).
+    // Not inlined: one copy for one thread and for each chunk on threads, with the evaluation
+    // kept out of line (inlined into such a run, one thread took 10–20 % longer).
+    #[cfg(not(target_arch = "wasm32"))]
+    #[inline(never)]
+    fn evaluate_run(&self, base: usize, run: Run<'_>, scratch: &mut Scratch) {
+        let (robots, commands, chords, after) = run;
+        let mut block = std::mem::take(&mut scratch.evaluated);
+        block.resize(STORED_BY, (Evaluation::default(), Motion::default()));
+        for start in (0..robots.len()).step_by(STORED_BY) {
+            let end = (start + STORED_BY).min(robots.len());
+            for ((j, me), slot) in (start..end).zip(&robots[start..end]).zip(&mut block) {
+                self.evaluation(base + j, me, scratch, slot);
+            }
+            for ((((r, command), chord), after), evaluated) in robots[start..end]
+                .iter_mut()
+                .zip(&mut commands[start..end])
+                .zip(&mut chords[start..end])
+                .zip(&mut after[start..end])
+                .zip(&block)
+            {
+                put((r, command, chord, after), evaluated);
+            }
+        }
+        scratch.evaluated = block;
+    }
+
+    /// The robots' slots that an evaluation writes, taken out of the simulation while the
+    /// evaluations read it ([`Self::evaluate_run`]); [`Self::put_slots`] puts them back.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn take_slots(&mut self) -> Slots {
+        Slots {
+            robots: std::mem::take(&mut self.robots),
+            commands: std::mem::take(&mut self.commands),
+            chords: std::mem::take(&mut self.chords),
+            after: std::mem::take(&mut self.headings_after),
+        }
+    }
+
+    /// Puts back the slots [`Self::take_slots`] took.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn put_slots(&mut self, slots: Slots) {
+        self.robots = slots.robots;
+        self.commands = slots.commands;
+        self.chords = slots.chords;
+        self.headings_after = slots.after;
     }
 
     /// Evaluates every robot on the threads of rayon's pool, in chunks, each with its own
-    /// buffers: the same bits as one after the other (each evaluation reads the snapshot only,
-    /// and lands in its own slot). Returns `false`, doing nothing, below [`PARALLEL_FROM`]
-    /// robots, on one thread, or when [`Self::set_parallel`] turned it off.
+    /// buffers and storing its own robots (`evaluate_run`): the same bits as one after the
+    /// other (each evaluation reads the snapshot only, and lands in its own slots). Returns
+    /// `false`, doing nothing, below [`PARALLEL_FROM`] robots, on one thread, or when
+    /// [`Self::set_parallel`] turned it off.
     #[cfg(not(target_arch = "wasm32"))]
     fn evaluate_in_parallel(&mut self) -> bool {
         use rayon::prelude::*;
@@ -686,33 +727,26 @@ impl Simulation {
         // A few chunks per thread, so that one slow chunk does not hold the others up.
         let chunks = 4 * rayon::current_num_threads();
         let size = n.div_ceil(chunks);
-        let mut out = std::mem::take(&mut self.evaluated);
-        out.resize(n, (Evaluation::default(), Motion::default()));
         let mut scratches = std::mem::take(&mut self.scratches);
         scratches.resize_with(chunks, Scratch::default);
         for s in &mut scratches {
             s.closest2 = f64::INFINITY;
         }
+        let mut slots = self.take_slots();
         let this = &*self;
-        out.par_chunks_mut(size)
-            .zip(scratches.par_iter_mut())
-            .enumerate()
-            .for_each(|(k, (chunk, scratch))| {
-                for (slot, i) in chunk.iter_mut().zip(k * size..) {
-                    this.evaluation(i, scratch, slot);
-                }
-            });
         (
-            &mut self.robots[..],
-            &mut self.commands[..],
-            &mut self.chords[..],
-            &mut self.headings_after[..],
+            slots.robots.par_chunks_mut(size),
+            slots.commands.par_chunks_mut(size),
+            slots.chords.par_chunks_mut(size),
+            slots.after.par_chunks_mut(size),
+            scratches.par_iter_mut(),
         )
             .into_par_iter()
-            .zip(&out[..])
-            .with_min_len(CHEAP_CHUNK)
-            .for_each(|(slots, evaluated)| put(slots, evaluated));
-        self.evaluated = out;
+            .enumerate()
+            .for_each(|(k, (robots, commands, chords, after, scratch))| {
+                this.evaluate_run(k * size, (robots, commands, chords, after), scratch);
+            });
+        self.put_slots(slots);
         self.scratches = scratches;
         true
     }
@@ -1127,6 +1161,38 @@ const STORED_BY: usize = 64;
 /// state, command, chord and snapshot speed.
 type Advanced<'a> = (((&'a mut Robot, &'a Command), &'a DVec2), &'a mut f64);
 
+/// The robots' slots that their evaluations write (`Simulation::take_slots`): their states
+/// (`last`), commands, chords and headings after the step.
+#[cfg(not(target_arch = "wasm32"))]
+struct Slots {
+    robots: Vec<Robot>,
+    commands: Vec<Command>,
+    chords: Vec<DVec2>,
+    after: Vec<DVec2>,
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+impl Slots {
+    /// The slots of the robots `range`.
+    fn run(&mut self, range: std::ops::Range<usize>) -> Run<'_> {
+        (
+            &mut self.robots[range.clone()],
+            &mut self.commands[range.clone()],
+            &mut self.chords[range.clone()],
+            &mut self.after[range],
+        )
+    }
+}
+
+/// The slots of a run of robots ([`Slots::run`]).
+#[cfg(not(target_arch = "wasm32"))]
+type Run<'a> = (
+    &'a mut [Robot],
+    &'a mut [Command],
+    &'a mut [DVec2],
+    &'a mut [DVec2],
+);
+
 /// Stores a robot's evaluation and the motion of its step in its slots: its state's `last`, its
 /// command, its chord and its heading after the step.
 #[inline]
@@ -1152,6 +1218,9 @@ struct Scratch {
     obstacles: Vec<u32>,
     constraints: safety::Constraints,
     closest2: f64,
+    // The evaluations of a run before they are stored (`Simulation::evaluate_run`).
+    #[cfg(not(target_arch = "wasm32"))]
+    evaluated: Vec<(Evaluation, Motion)>,
 }
 
 /// Whether a robot at `now` has moved at most `half` from `was` (see
