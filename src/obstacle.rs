@@ -7,7 +7,6 @@
 
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
-use std::f64::consts::PI;
 
 /// A circular obstacle.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -31,8 +30,9 @@ impl Obstacle {
 }
 
 /// The transition function `ς` of eq. `eq_switch_func`: 0 for `d < R`, 1 for `d > R + ε`,
-/// and `½ sin(π(d − R)/ε − π/2) + ½` in between. Continuous and non-decreasing in `d`, with a
-/// zero slope at both ends of the band. `eps > 0`.
+/// and `½ sin(π(d − R)/ε − π/2) + ½` in between: the raised cosine of `(d − R)/ε`
+/// ([`crate::maths::raised_cosine`]). Continuous and non-decreasing in `d`, with a zero slope at
+/// both ends of the band. `eps > 0`.
 #[inline]
 #[must_use]
 pub fn transition(d: f64, big_r: f64, eps: f64) -> f64 {
@@ -41,7 +41,7 @@ pub fn transition(d: f64, big_r: f64, eps: f64) -> f64 {
     } else if d > big_r + eps {
         1.0
     } else {
-        0.5 * crate::maths::sin((d - big_r) / eps * PI - 0.5 * PI) + 0.5
+        crate::maths::raised_cosine((d - big_r) / eps)
     }
 }
 
@@ -223,6 +223,7 @@ mod tests {
     use super::*;
     use crate::testing::assert_close;
     use crate::testing::test;
+    use std::f64::consts::PI;
 
     #[test]
     fn transition_limits_and_continuity() {
