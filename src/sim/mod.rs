@@ -509,8 +509,7 @@ impl Simulation {
         // the processor forwards each piece from its store (a read across two stores waits for
         // both to reach the cache: in open space a twentieth of the step's time went there).
         let mut evaluated = (Evaluation::default(), Motion::default());
-        let me = self.robots[i];
-        self.evaluation(i, &me, scratch, &mut evaluated);
+        self.evaluation(i, &self.robots[i], scratch, &mut evaluated);
         put(
             (
                 &mut self.robots[i],
