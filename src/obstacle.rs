@@ -31,7 +31,7 @@ impl Obstacle {
 
 /// The transition function `ς` of eq. `eq_switch_func`: 0 for `d < R`, 1 for `d > R + ε`,
 /// and `½ sin(π(d − R)/ε − π/2) + ½` in between: the raised cosine of `(d − R)/ε`
-/// ([`crate::maths::raised_cosine`]). Continuous and non-decreasing in `d`, with a zero slope at
+/// (`maths::raised_cosine`). Continuous and non-decreasing in `d`, with a zero slope at
 /// both ends of the band. `eps > 0`.
 #[inline]
 #[must_use]
