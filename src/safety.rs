@@ -267,6 +267,10 @@ pub fn filter_facing<'a>(
     let Some(rate) = params.barrier_rate else {
         return (c, motion(h, c.omega, dt));
     };
+    // The step's motion if the field is not held, taken before the constraints, on which it
+    // does not depend: its series then runs while the constraints' divisions do.
+    let free = turned(params, c.omega, 0.0);
+    let free_step = motion(h, free, dt);
     let safe = 2.0 * params.safe_radius;
     constraints.derive(p, rate * dt, safe, neighbours, obstacles);
     steer(
@@ -275,9 +279,18 @@ pub fn filter_facing<'a>(
         h,
         c,
         field,
+        (free, free_step),
         |direction| constraints.limits(direction, dt),
         |a, b| constraints.limits_of_two(a, b, dt),
     )
+}
+
+/// The turn rate `ω + k_a·held·π/2` of a command whose field the barrier holds by `held`,
+/// within `ω_max` (see [`filter`]).
+#[inline]
+fn turned(params: &Params, omega: f64, held: f64) -> f64 {
+    let turned = omega + params.k_a * held * FRAC_PI_2;
+    params.omega_max.map_or(turned, |m| turned.clamp(-m, m))
 }
 
 /// The barrier's constraints on one robot: for each neighbour and obstacle, the unit vector
@@ -350,22 +363,19 @@ impl Constraints {
 /// tell; but a field that is not held (the usual case) turns the robot by nothing, and the
 /// step's direction is then known before: the limits along the field and along that step are
 /// taken in one pass, and a held field takes a second pass for its own step. The same bits
-/// either way.
+/// either way. The motion of the step without a hold (`free`: its turn rate and motion) comes
+/// from the caller, which takes it before the constraints.
+#[allow(clippy::too_many_arguments)]
 fn steer(
     params: &Params,
     dt: f64,
     h: DVec2,
     c: Command,
     field: DVec2,
+    (free, free_step): (f64, Motion),
     limits: impl Fn(DVec2) -> SpeedLimits,
     limits_of_two: impl Fn(DVec2, DVec2) -> (SpeedLimits, SpeedLimits),
 ) -> (Command, Motion) {
-    let turn = |held: f64| {
-        let turned = c.omega + params.k_a * held * FRAC_PI_2;
-        params.omega_max.map_or(turned, |m| turned.clamp(-m, m))
-    };
-    let free = turn(0.0);
-    let free_step = motion(h, free, dt);
     let wanted = (params.k_v * field.length()).min(params.avoid_speed);
     let (held, free_limits) = match field.try_normalize() {
         Some(along) if wanted > 0.0 => {
@@ -391,7 +401,7 @@ fn steer(
             free_step,
         );
     }
-    let omega = turn(held);
+    let omega = turned(params, c.omega, held);
     let step = motion(h, omega, dt);
     let v = limits(step.chord).clamp(c.v);
     (Command { v, omega }, step)
