@@ -174,6 +174,11 @@ mod tests {
     use super::*;
     use crate::testing::{test, XorShift};
 
+    /// How many ulps of `b` lie between `a` and `b` (relative, for `b` down to 1e-300).
+    fn ulps(a: f64, b: f64) -> f64 {
+        (a - b).abs() / (f64::EPSILON * b.abs().max(1e-300))
+    }
+
     /// In every build `sin_cos` and `sin`, `cos` agree to the bit, over
     /// every range the method uses (headings, half-angles, turns) and beyond.
     #[test]
@@ -194,7 +199,6 @@ mod tests {
     #[test]
     fn atan2_is_the_angle() {
         let mut rng = XorShift(0x1F2E_3D4C_5B6A_7988);
-        let ulps = |a: f64, b: f64| (a - b).abs() / (f64::EPSILON * b.abs().max(1e-300));
         for k in 0..200_000 {
             let (y, x) = (rng.range(-1.0, 1.0), rng.range(-1.0, 1.0));
             let x = if k % 2 == 0 {
@@ -271,7 +275,6 @@ mod tests {
     #[test]
     fn agrees_with_the_platform_library() {
         let mut rng = XorShift(0x2545_F491_4F6C_DD1D);
-        let ulps = |a: f64, b: f64| (a - b).abs() / (f64::EPSILON * b.abs().max(1e-300));
         for _ in 0..20_000 {
             let (x, y) = (rng.range(-4.0, 4.0), rng.range(-4.0, 4.0));
             assert!(ulps(sin(x), x.sin()) <= 2.0);

@@ -269,7 +269,7 @@ pub fn filter_facing<'a>(
     };
     // The step's motion if the field is not held, taken before the constraints, on which it
     // does not depend: its series then runs while the constraints' divisions do.
-    let free = turned(params, c.omega, 0.0);
+    let free = turn_rate(params, c.omega, 0.0);
     let free_step = motion(h, free, dt);
     let safe = 2.0 * params.safe_radius;
     constraints.derive(p, rate * dt, safe, neighbours, obstacles);
@@ -288,7 +288,7 @@ pub fn filter_facing<'a>(
 /// The turn rate `ω + k_a·held·π/2` of a command whose field the barrier holds by `held`,
 /// within `ω_max` (see [`filter`]).
 #[inline]
-fn turned(params: &Params, omega: f64, held: f64) -> f64 {
+fn turn_rate(params: &Params, omega: f64, held: f64) -> f64 {
     let turned = omega + params.k_a * held * FRAC_PI_2;
     params.omega_max.map_or(turned, |m| turned.clamp(-m, m))
 }
@@ -401,7 +401,7 @@ fn steer(
             free_step,
         );
     }
-    let omega = turned(params, c.omega, held);
+    let omega = turn_rate(params, c.omega, held);
     let step = motion(h, omega, dt);
     let v = limits(step.chord).clamp(c.v);
     (Command { v, omega }, step)
