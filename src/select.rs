@@ -3,26 +3,19 @@
 //! A plain `if take { a } else { b }` is a select to LLVM, which may still turn it into a branch.
 //! Where the condition is a coin toss, as whether a neighbour in a crowd is ahead or behind, a
 //! branch is mispredicted about half the time. These say so to the compiler
-//! (`std::hint::select_unpredictable`). On x86-64 that is enough for a vector ([`pick2`]) and
-//! for a scalar whose condition is a comparison of floats; a scalar `f64` on another condition
-//! was still compiled into a branch, and `swarm::cluster` makes its condition such a
-//! comparison or selects the bits. (An earlier version masked the bits by hand; the compiler
-//! recognised the select and branched all the same.)
-
-use glam::DVec2;
+//! (`std::hint::select_unpredictable`). On x86-64 that is enough for an integer and for a
+//! scalar whose condition is a comparison of floats; a scalar `f64` on another condition was
+//! still compiled into a branch, and `swarm::cluster` makes its condition such a comparison
+//! and keeps its nearest neighbour by place, an integer. (An earlier version masked the bits by
+//! hand; the compiler recognised the select and branched all the same. A vector's two
+//! components selected together, with the neighbour's speed beside them, took a branch for
+//! the speed.)
 
 /// `a` when `take`, else `b`, the same bits.
 #[inline]
 #[must_use]
 pub(crate) fn pick(take: bool, a: f64, b: f64) -> f64 {
     std::hint::select_unpredictable(take, a, b)
-}
-
-/// [`pick`] for both components of a vector.
-#[inline]
-#[must_use]
-pub(crate) fn pick2(take: bool, a: DVec2, b: DVec2) -> DVec2 {
-    DVec2::new(pick(take, a.x, b.x), pick(take, a.y, b.y))
 }
 
 #[cfg(test)]
@@ -49,14 +42,5 @@ mod tests {
                 assert_eq!(pick(false, a, b).to_bits(), b.to_bits());
             }
         }
-        let (a, b) = (DVec2::new(1.0, -0.0), DVec2::new(f64::NAN, 3.0));
-        assert_eq!(
-            pick2(true, a, b).to_array().map(f64::to_bits),
-            a.to_array().map(f64::to_bits)
-        );
-        assert_eq!(
-            pick2(false, a, b).to_array().map(f64::to_bits),
-            b.to_array().map(f64::to_bits)
-        );
     }
 }
