@@ -157,6 +157,9 @@ await run(async ({ base, newPage }) => {
   await page.waitForFunction(() => document.getElementById('visible').playing);
   await page.waitForFunction(() => document.getElementById('lazy').scenario() !== null);
   check(true, 'scrolled into view, the figure plays and the lazy one loads');
+  // Its time has moved (a frame has run) before it leaves the view: playing is set at once,
+  // the first frame comes later, and on a loaded machine the scroll could come first.
+  await page.waitForFunction(() => document.getElementById('visible').time > 0);
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.waitForFunction(() => !document.getElementById('visible').playing);
   const paused = await page.evaluate(() => document.getElementById('visible').time);
