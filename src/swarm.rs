@@ -181,66 +181,69 @@ pub fn cluster(
     })
 }
 
-/// [`cluster`]'s choice of the nearest neighbour to circle, one neighbour (the `k`-th, at
-/// squared distance `d2`) at a time: the nearest so far, as its squared distance and place,
-/// replaced by this one if it is a `candidate` nearer than that (the first of equally near
-/// ones, as `min_by` keeps).
+/// The nearest neighbour to circle among the `sensed` within `range` of the robot `me`: the
+/// nearest of those its motion and its field lead towards that `clear` (which sees every
+/// neighbour in range, with its squared distance) lets it circle, as its squared distance
+/// (`+∞` for none) and its place among the sensed; the first of equally near ones, as `min_by`
+/// keeps. [`cluster`]'s two passes ([`nearest_moving`], [`nearest_exit`]).
 ///
 /// By selects, without a branch to mispredict: whether a neighbour is ahead is a coin toss in a
 /// crowd, and so is whether it is the nearest so far. The compiler turns a select of one `f64`
 /// into a branch unless its condition is a comparison of floats: the condition is made one, by
 /// giving a neighbour that is no candidate a key that no comparison takes (its exponent's bits
 /// all set: `+∞` or NaN). Measured in the jam of the crowd of 1,000: 6 % less time a step
-/// (README, Performance).
+/// (README, Performance). The nearest one is kept by its place, not as a neighbour: a select
+/// of an integer and a minimum, where its speed kept alongside took a branch.
 #[inline(always)]
-fn keep_nearest(candidate: bool, d2: f64, k: usize, (nearest2, at): (f64, usize)) -> (f64, usize) {
-    let key = f64::from_bits(
-        d2.to_bits() | (u64::from(!candidate).wrapping_neg() & f64::INFINITY.to_bits()),
-    );
-    let take = key < nearest2;
-    (
-        pick(take, key, nearest2),
-        std::hint::select_unpredictable(take, k, at),
-    )
-}
-
-/// [`cluster`]'s pass for [`Avoidance::Exit`] where no neighbour within `range` is at rest:
-/// the nearest neighbour to circle, the nearest of those the robot's motion and its field lead
-/// towards, as its squared distance (`+∞` for none) and its place among the `sensed`; `None`
-/// where some neighbour in range is at rest ([`nearest_exit`] then looks again). The same
-/// answer as `nearest_exit` otherwise: a neighbour that moves is neither in a parked formation
-/// nor aside.
-///
-/// Without a call in the loop its values stay in registers (`nearest_exit`'s call, though
-/// never taken, put them on the stack: in the jam of the crowd of 1,000, 8 % fewer
-/// instructions a step and 3–5 % less time). The nearest one is kept by its place, not as a
-/// neighbour: a select of an integer and a minimum, where its speed kept alongside took a
-/// branch.
-fn nearest_moving(
+fn nearest_in_range(
     me: Approach,
     sensed: impl Iterator<Item = Neighbour>,
     range: f64,
-) -> Option<(f64, usize)> {
+    mut clear: impl FnMut(Neighbour, f64) -> bool,
+) -> (f64, usize) {
     let p_i = me.position;
     let (mut nearest2, mut at) = (f64::INFINITY, 0);
-    let mut any_at_rest = false;
     for (k, n) in sensed.enumerate() {
         if !within(n.position, p_i, range) {
             continue;
         }
         let to = n.position - p_i;
         let d2 = n.position.distance_squared(p_i);
-        any_at_rest |= at_rest(me, n);
-        let candidate = (me.motion.dot(to) > 0.0) & (me.field.dot(to) > 0.0);
-        (nearest2, at) = keep_nearest(candidate, d2, k, (nearest2, at));
+        let candidate = (me.motion.dot(to) > 0.0) & (me.field.dot(to) > 0.0) & clear(n, d2);
+        let key = f64::from_bits(
+            d2.to_bits() | (u64::from(!candidate).wrapping_neg() & f64::INFINITY.to_bits()),
+        );
+        let take = key < nearest2;
+        nearest2 = pick(take, key, nearest2);
+        at = std::hint::select_unpredictable(take, k, at);
     }
-    (!any_at_rest).then_some((nearest2, at))
+    (nearest2, at)
+}
+
+/// [`cluster`]'s pass for [`Avoidance::Exit`] where no neighbour within `range` is at rest:
+/// [`nearest_in_range`] with every neighbour clear; `None` where some neighbour in range is at
+/// rest ([`nearest_exit`] then looks again). The same answer as `nearest_exit` otherwise: a
+/// neighbour that moves is neither in a parked formation nor aside.
+///
+/// Without a call in the loop its values stay in registers (`nearest_exit`'s call, though
+/// never taken, put them on the stack: in the jam of the crowd of 1,000, 8 % fewer
+/// instructions a step and 3–5 % less time).
+fn nearest_moving(
+    me: Approach,
+    sensed: impl Iterator<Item = Neighbour>,
+    range: f64,
+) -> Option<(f64, usize)> {
+    let mut any_at_rest = false;
+    let nearest = nearest_in_range(me, sensed, range, |n, _| {
+        any_at_rest |= at_rest(me, n);
+        true
+    });
+    (!any_at_rest).then_some(nearest)
 }
 
 /// [`cluster`]'s pass for [`Avoidance::Exit`] where a neighbour within `range` is at rest:
-/// the nearest neighbour to circle among those not in a parked formation and in the way
-/// (`aside` below 1), as its squared distance and its place among the `sensed` neighbours, and
-/// the squared distance of the nearest robot of a parked formation (`+∞` for none). A
+/// [`nearest_in_range`] among those not in a parked formation and in the way (`aside` below
+/// 1), and the squared distance of the nearest robot of a parked formation (`+∞` for none). A
 /// neighbour at rest is looked at out of line, behind a branch (`at_rest_neighbour`), which in
 /// a crowd on its way is predicted.
 #[cfg_attr(not(target_arch = "wasm32"), inline(never))]
@@ -250,15 +253,8 @@ fn nearest_exit(
     range: f64,
     safe: f64,
 ) -> (f64, usize, f64) {
-    let p_i = me.position;
-    let (mut nearest2, mut at) = (f64::INFINITY, 0);
     let mut parked = f64::INFINITY;
-    for (k, n) in sensed.clone().enumerate() {
-        if !within(n.position, p_i, range) {
-            continue;
-        }
-        let to = n.position - p_i;
-        let d2 = n.position.distance_squared(p_i);
+    let (nearest2, at) = nearest_in_range(me, sensed.clone(), range, |n, d2| {
         // Whether it stands in a parked formation, and whether it may be circled (not in one,
         // and in the way: `aside` below 1); a neighbour that moves is neither in a parked
         // formation nor aside.
@@ -272,9 +268,8 @@ fn nearest_exit(
         } else {
             parked
         };
-        let candidate = (me.motion.dot(to) > 0.0) & (me.field.dot(to) > 0.0) & clear;
-        (nearest2, at) = keep_nearest(candidate, d2, k, (nearest2, at));
-    }
+        clear
+    });
     (nearest2, at, parked)
 }
 
