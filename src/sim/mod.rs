@@ -132,8 +132,7 @@ pub struct Simulation {
     // than it) or an edit has evaluated some robots since.
     closest2: Option<f64>,
     scratch: Scratch,
-    // The parallel step (native only): whether it is on, its buffers (one per chunk), and the
-    // evaluations before they are stored.
+    // The parallel step (native only): whether it is on, and its buffers (one per chunk).
     #[cfg(not(target_arch = "wasm32"))]
     parallel: bool,
     #[cfg(not(target_arch = "wasm32"))]
@@ -463,9 +462,8 @@ impl Simulation {
             // less code.
             #[cfg(not(target_arch = "wasm32"))]
             {
-                let n = self.robots.len();
                 let mut slots = self.take_slots();
-                self.evaluate_run(0, slots.run(0..n), &mut scratch);
+                self.evaluate_run(0, slots.run(), &mut scratch);
                 self.put_slots(slots);
             }
             #[cfg(target_arch = "wasm32")]
@@ -1172,13 +1170,13 @@ struct Slots {
 
 #[cfg(not(target_arch = "wasm32"))]
 impl Slots {
-    /// The slots of the robots `range`.
-    fn run(&mut self, range: std::ops::Range<usize>) -> Run<'_> {
+    /// The slots of all the robots, as one run.
+    fn run(&mut self) -> Run<'_> {
         (
-            &mut self.robots[range.clone()],
-            &mut self.commands[range.clone()],
-            &mut self.chords[range.clone()],
-            &mut self.after[range],
+            &mut self.robots,
+            &mut self.commands,
+            &mut self.chords,
+            &mut self.after,
         )
     }
 }
