@@ -13,6 +13,9 @@
 //! argument reduction by branches on the argument's range, which a crowd's robots take at
 //! random; these choose it by selects and take at most one division. Within 2 ulps of the
 //! exact value (`agrees_with_the_platform_library`, `raised_cosine_is_the_raised_cosine`).
+//! The arctangent sums musl's polynomial by Estrin's scheme rather than Horner's (the same
+//! coefficients, fewer operations in a row, as accurate): a circling robot's command waits on
+//! it.
 
 /// `sin x`.
 #[inline]
@@ -109,8 +112,18 @@ fn first_quadrant(a: f64, b: f64) -> f64 {
     let z = if den == 0.0 { 0.0 } else { z };
     let w = z * z;
     let w2 = w * w;
-    let s1 = w * (AT[0] + w2 * (AT[2] + w2 * (AT[4] + w2 * (AT[6] + w2 * (AT[8] + w2 * AT[10])))));
-    let s2 = w2 * (AT[1] + w2 * (AT[3] + w2 * (AT[5] + w2 * (AT[7] + w2 * AT[9]))));
+    // musl's two polynomials in `w² = z⁴` by Estrin's scheme, pairs of terms joined by the
+    // powers `w⁴` and `w⁸`, rather than Horner's: six operations in a row after `w²` instead
+    // of eleven. A circling robot's command waits on this angle (its turn rate, then the chord
+    // the barrier clamps its speed along), and in a jam nearly every robot circles (README,
+    // Performance, "The arctangent's chain"). A change of arithmetic: the same coefficients
+    // summed in another order, as accurate (1.26 ulps at worst against the platform's
+    // library in `atan2_is_the_angle`'s draw, as before; the mean error 0.1545 ulps against
+    // 0.1544).
+    let w4 = w2 * w2;
+    let w8 = w4 * w4;
+    let s1 = w * ((AT[0] + w2 * AT[2]) + w4 * (AT[4] + w2 * AT[6]) + w8 * (AT[8] + w2 * AT[10]));
+    let s2 = w2 * ((AT[1] + w2 * AT[3]) + w4 * (AT[5] + w2 * AT[7]) + w8 * AT[9]);
     let (hi, lo) = (
         pick(HALF_PI.0, QUARTER_PI.0, 0.0),
         pick(HALF_PI.1, QUARTER_PI.1, 0.0),
