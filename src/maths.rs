@@ -117,9 +117,9 @@ fn first_quadrant(a: f64, b: f64) -> f64 {
     // of eleven. A circling robot's command waits on this angle (its turn rate, then the chord
     // the barrier clamps its speed along), and in a jam nearly every robot circles (README,
     // Performance, "The arctangent's chain"). A change of arithmetic: the same coefficients
-    // summed in another order, as accurate (1.26 ulps at worst against the platform's
-    // library in `atan2_is_the_angle`'s draw, as before; the mean error 0.1545 ulps against
-    // 0.1544).
+    // summed in another order, as accurate (against the platform's library, over 4,000,000
+    // pairs drawn as `atan2_is_the_angle` draws them: 1.26 ulps at worst, as before, and
+    // 0.1545 on average against 0.1544).
     let w4 = w2 * w2;
     let w8 = w4 * w4;
     let s1 = w * ((AT[0] + w2 * AT[2]) + w4 * (AT[4] + w2 * AT[6]) + w8 * (AT[8] + w2 * AT[10]));
