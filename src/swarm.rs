@@ -164,7 +164,9 @@ pub fn cluster(
             let nearest = sensed.clone().nth(at)?;
             (
                 virtual_obstacle_between(p_i, me.speed, nearest),
-                Some(nearest.position.distance(p_i) - safe),
+                // `nearest2` is its squared distance (a candidate's key): its root is the
+                // distance, the same bits.
+                Some(nearest2.sqrt() - safe),
                 self::at_rest(me, nearest),
                 self::aside(me, nearest, safe),
                 self::squeezed(parked, safe),
