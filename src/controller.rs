@@ -136,7 +136,7 @@ pub fn command(
     let sensed = neighbours.iter().map(|&position| Neighbour {
         position,
         speed: 0.0,
-        slowest_near: None,
+        slowest_near: crate::swarm::SLOWEST_UNKNOWN,
     });
     evaluate(params, pose, err, 0.0, obstacles, sensed).command
 }
@@ -441,7 +441,7 @@ mod tests {
         let n = Neighbour {
             position: DVec2::new(1.0, 0.0),
             speed: 2.0,
-            slowest_near: None,
+            slowest_near: crate::swarm::SLOWEST_UNKNOWN,
         };
         let e = evaluate(&p, pose, pose.error_to(goal), 2.0, [], [n]);
         assert_eq!(e.robot_keep, 0.0);
@@ -469,7 +469,7 @@ mod tests {
             let n = Neighbour {
                 position: DVec2::new(2.0, y + 1.6),
                 speed: 0.0,
-                slowest_near: None,
+                slowest_near: crate::swarm::SLOWEST_UNKNOWN,
             };
             let e = evaluate(&p, pose, pose.error_to(goal), 0.0, [&o], [n]);
             (e.virtual_obstacle, n.position, pose.p)

@@ -73,7 +73,7 @@ impl Live {
                         Neighbour {
                             position: o.pose.p,
                             speed: o.last.command.v.abs(),
-                            slowest_near: None,
+                            slowest_near: crate::swarm::SLOWEST_UNKNOWN,
                         }
                     }));
                 }

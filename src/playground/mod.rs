@@ -557,7 +557,7 @@ mod tests {
                     .map(|(_, o)| Neighbour {
                         position: o.pose.p,
                         speed: o.last.command.v.abs(),
-                        slowest_near: None,
+                        slowest_near: crate::swarm::SLOWEST_UNKNOWN,
                     })
                     .collect();
                 let e = evaluate(

@@ -39,7 +39,7 @@ use crate::params::{Avoidance, Params};
 use crate::safety;
 use crate::scenario::Scenario;
 use crate::se2::{continue_branch, heading, unrotate_by, wrap_angle, Pose};
-use crate::swarm::{at_rest_beside, cluster_reach, pair_range, Neighbour};
+use crate::swarm::{at_rest_beside, cluster_reach, pair_range, Neighbour, SLOWEST_UNKNOWN};
 use crate::unicycle::{integrate_along, Motion};
 use crate::Command;
 use glam::DVec2;
@@ -390,13 +390,13 @@ impl Simulation {
         let record = |(n, (r, &speed)): (usize, (&Robot, &f64))| Neighbour {
             position: r.pose.p,
             speed,
-            slowest_near: known.then(|| {
-                if at_rest_beside(speed, fastest) {
-                    self.slowest_near(n, range2)
-                } else {
-                    f64::INFINITY
-                }
-            }),
+            slowest_near: if !known {
+                SLOWEST_UNKNOWN
+            } else if at_rest_beside(speed, fastest) {
+                self.slowest_near(n, range2)
+            } else {
+                f64::INFINITY
+            },
         };
         if self.threaded() {
             #[cfg(not(target_arch = "wasm32"))]
