@@ -118,8 +118,9 @@ impl Cells {
     }
 
     /// The ranges of [`Cells::order`] that hold the 3 × 3 block of cells around cell
-    /// `(cx, cy)`, each bucket once: `(runs, count)`, the first `count` runs valid. Each range
-    /// is ascending in point index, the ranges are not ordered among themselves.
+    /// `(cx, cy)`, each bucket once: `(runs, count)`, the first `count` runs valid. Each bucket
+    /// of a range is ascending in point index, not a range that spans several buckets, and the
+    /// ranges are not ordered among themselves.
     #[must_use]
     pub fn block(&self, (cx, cy): (i64, i64)) -> ([(u32, u32); 6], usize) {
         let buckets = self.buckets;
@@ -192,7 +193,7 @@ impl Cells {
                     }),
             );
         }
-        // A few dozen entries, each run ascending already: an insertion sort, and far less
+        // A few dozen entries, each bucket ascending already: an insertion sort, and far less
         // code in the wasm module than a library sort.
         let v = &mut out[from..];
         for i in 1..v.len() {
