@@ -582,10 +582,11 @@ impl Simulation {
                 let neighbour = self.sensed[j as usize];
                 let d2 = neighbour.position.distance_squared(p);
                 let within = d2 <= split2;
-                let beyond = !within & (d2 <= r2);
                 neighbours[std::hint::select_unpredictable(within, near, far - 1)] = neighbour;
                 near += usize::from(within);
-                far -= usize::from(beyond);
+                // Those within the controller's reach are sensed (`split ≤ r`): the second run
+                // takes the others sensed.
+                far -= usize::from(d2 <= r2) - usize::from(within);
                 nearest2 = if d2 < nearest2 { d2 } else { nearest2 };
             }
             if nearest2 <= r2 && nearest2 < scratch.closest2 {
