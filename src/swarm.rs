@@ -56,7 +56,13 @@ impl Default for Neighbour {
 pub struct Cluster {
     /// `p̃_o`: the point the robot circles.
     pub center: DVec2,
-    /// The distance fed to `ς` (eq. `eq_switch_func` with `R_c`): `|p_i − p̃_o|`.
+    /// The distance fed to `ς` (eq. `eq_switch_func` with `R_c`): `|p_i − p̃_o|`. For
+    /// [`Avoidance::Exit`] it is taken as `|p_j − p_i|·w_i/(w_i + w_j)`, the neighbour's
+    /// distance times the share of the way at which `p̃_o` stands
+    /// ([`virtual_obstacle_between`]): the same length to a few ulps, from the distance the
+    /// choice of the neighbour has measured, where `|p_i − p̃_o|` waits on `p̃_o` and then
+    /// takes a square root of its own (a circling robot's command waits on it: README,
+    /// Performance).
     pub distance: f64,
     /// [`Avoidance::Exit`]: how far the robot is from the avoided neighbour's safe disc,
     /// `d − 2·r_ij`. The controller lets the neighbour go, as it does an obstacle
@@ -145,19 +151,16 @@ pub fn cluster(
 ) -> Option<Cluster> {
     let p_i = me.position;
     let sensed = neighbours.into_iter();
-    let (center, clearance, at_rest, aside, squeezed) = match avoidance {
-        Avoidance::Paper => (
-            virtual_obstacle(
+    let (center, distance, clearance, at_rest, aside, squeezed) = match avoidance {
+        Avoidance::Paper => {
+            let center = virtual_obstacle(
                 p_i,
                 sensed
                     .filter(|n| within(n.position, p_i, range))
                     .map(|n| n.position),
-            )?,
-            None,
-            false,
-            0.0,
-            0.0,
-        ),
+            )?;
+            (center, p_i.distance(center), None, false, 0.0, 0.0)
+        }
         Avoidance::Exit => {
             // The nearest neighbour to circle, by squared distance and its place among the
             // sensed, and the nearest robot of a parked formation (`squeezed`): natively by a
@@ -180,11 +183,14 @@ pub fn cluster(
                 return None;
             }
             let nearest = sensed.clone().nth(at)?;
+            // `nearest2` is its squared distance (a candidate's key): its root is the
+            // distance, the same bits.
+            let d = nearest2.sqrt();
+            let share = share_of_the_way(me.speed, nearest);
             (
-                virtual_obstacle_between(p_i, me.speed, nearest),
-                // `nearest2` is its squared distance (a candidate's key): its root is the
-                // distance, the same bits.
-                Some(nearest2.sqrt() - safe),
+                p_i + (nearest.position - p_i) * share,
+                d * share,
+                Some(d - safe),
                 self::at_rest(me, nearest),
                 self::aside(me, nearest, safe),
                 self::squeezed(parked, safe),
@@ -193,7 +199,7 @@ pub fn cluster(
     };
     Some(Cluster {
         center,
-        distance: p_i.distance(center),
+        distance,
         clearance,
         at_rest,
         aside,
@@ -497,9 +503,16 @@ pub fn segment_distance(q: DVec2, a: DVec2, b: DVec2) -> f64 {
 #[inline]
 #[must_use]
 pub fn virtual_obstacle_between(p_i: DVec2, speed: f64, n: Neighbour) -> DVec2 {
+    p_i + (n.position - p_i) * share_of_the_way(speed, n)
+}
+
+/// How far along the segment from a robot moving at `speed` to its neighbour `n` their
+/// virtual obstacle stands: `w_i/(w_i + w_j)` ([`virtual_obstacle_between`]).
+#[inline]
+fn share_of_the_way(speed: f64, n: Neighbour) -> f64 {
     let w_i = speed.abs() + SPEED_FLOOR;
     let w_j = n.speed.abs() + SPEED_FLOOR;
-    p_i + (n.position - p_i) * (w_i / (w_i + w_j))
+    w_i / (w_i + w_j)
 }
 
 /// The virtual obstacle `p̃_o` of robot `i` at `p_i`: the centroid of `p_i` and of the
@@ -855,6 +868,50 @@ mod tests {
             virtual_obstacle_between(p, 0.0, parked),
             DVec2::new(2.0, 0.0)
         );
+    }
+
+    /// [`Cluster::distance`] with [`Avoidance::Exit`], taken as the neighbour's distance times
+    /// the share of the way, is the distance from the robot to the virtual obstacle, within
+    /// the rounding of the latter: `|p_i − p̃_o|` rounds the positions (about an ulp of the
+    /// largest coordinate, twice, for `p̃_o` and for the difference) where the product rounds
+    /// only lengths of the order of `d` (three or four half-ulps of `d`). Eight machine
+    /// epsilons of the coordinates and of `d` cover both, with room.
+    #[test]
+    fn the_distance_to_the_virtual_obstacle_is_a_share_of_the_neighbours() {
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..10_000 {
+            let scale = [1.0, 100.0, 10_000.0][(next() * 3.0) as usize];
+            let p = DVec2::new(next() - 0.5, next() - 0.5) * 2.0 * scale;
+            let d = 0.05 + 7.9 * next();
+            let angle = std::f64::consts::TAU * next();
+            let to = DVec2::new(angle.cos(), angle.sin());
+            // Both moving (a neighbour at rest aside of the way could be let go), the robot
+            // heading for it: it is the one circled.
+            let speed = 20.0 * next();
+            let n = Neighbour {
+                position: p + d * to,
+                speed: speed * (0.2 + 2.0 * next()),
+                slowest_near: f64::INFINITY,
+            };
+            let me = Approach {
+                position: p,
+                motion: to,
+                field: to,
+                goal_error: DVec2::new(-1000.0, 0.0),
+                goal_attitude: 0.0,
+                speed,
+            };
+            let c = cluster(me, [n], 8.0, 2.0, Avoidance::Exit).expect("the neighbour is ahead");
+            let tol =
+                8.0 * f64::EPSILON * (p.abs().max_element() + n.position.abs().max_element() + d);
+            assert_close!(c.distance, p.distance(c.center), tol);
+        }
     }
 
     #[test]
