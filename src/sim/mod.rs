@@ -543,6 +543,18 @@ impl Simulation {
         let r2 = r * r;
         let neighbours = &mut scratch.neighbours;
         let p = me.pose.p;
+        let err = Pose {
+            p: self.error_position(i, me),
+            theta: me.heading_error,
+        };
+        // The heading, for the controller and the barrier, and the heading error's cosine and
+        // sine, for the log map: the heading rotated back by the goal's.
+        let h = self.headings[i];
+        let facing = Facing {
+            heading: h,
+            error: unrotate_by(self.goal_headings[i], h),
+        };
+
         // The sensed robots within the controller's reach, as a count of the buffer's first
         // slots, and the others sensed, as a range of its slots. Either way those within reach
         // come in ascending index: the grid's lists are sorted.
@@ -607,17 +619,6 @@ impl Simulation {
             (0, 0..0)
         };
         let (near, far) = (&neighbours[..count], &neighbours[others]);
-        let err = Pose {
-            p: self.error_position(i, me),
-            theta: me.heading_error,
-        };
-        // The heading, for the controller and the barrier, and the heading error's cosine and
-        // sine, for the log map: the heading rotated back by the goal's.
-        let h = self.headings[i];
-        let facing = Facing {
-            heading: h,
-            error: unrotate_by(self.goal_headings[i], h),
-        };
         // The sensed obstacles, found once for the controller's passes and the barrier's (none
         // to look up in a scene without obstacles, a crowd's).
         let sensed = &mut scratch.obstacles;
