@@ -574,7 +574,7 @@ mod tests {
     use super::*;
     use crate::se2::heading;
     use crate::testing::assert_close;
-    use crate::testing::test;
+    use crate::testing::{test, XorShift};
     use std::f64::consts::{FRAC_PI_2, PI};
 
     fn at(x: f64, y: f64) -> Neighbour {
@@ -878,25 +878,18 @@ mod tests {
     /// epsilons of the coordinates and of `d` cover both, with room.
     #[test]
     fn the_distance_to_the_virtual_obstacle_is_a_share_of_the_neighbours() {
-        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rng = XorShift(0x2545_F491_4F6C_DD1D);
         for _ in 0..10_000 {
-            let scale = [1.0, 100.0, 10_000.0][(next() * 3.0) as usize];
-            let p = DVec2::new(next() - 0.5, next() - 0.5) * 2.0 * scale;
-            let d = 0.05 + 7.9 * next();
-            let angle = std::f64::consts::TAU * next();
-            let to = DVec2::new(angle.cos(), angle.sin());
+            let scale = [1.0, 100.0, 10_000.0][(rng.unit() * 3.0) as usize];
+            let p = DVec2::new(rng.range(-scale, scale), rng.range(-scale, scale));
+            let d = rng.range(0.05, 7.95);
+            let to = heading(rng.heading());
             // Both moving (a neighbour at rest aside of the way could be let go), the robot
             // heading for it: it is the one circled.
-            let speed = 20.0 * next();
+            let speed = rng.range(0.0, 20.0);
             let n = Neighbour {
                 position: p + d * to,
-                speed: speed * (0.2 + 2.0 * next()),
+                speed: speed * rng.range(0.2, 2.2),
                 slowest_near: f64::INFINITY,
             };
             let me = Approach {
