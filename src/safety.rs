@@ -376,8 +376,8 @@ impl Constraints {
 /// tell; but a field that is not held (the usual case) turns the robot by nothing, and the
 /// step's direction is then known before: the limits along the field and along that step are
 /// taken together ([`Constraints::limits_of_two`]), and a held field takes another pass for its
-/// own step. The same bits either way. The motion of the step without a hold (`free`: its turn rate and motion) comes
-/// from the caller, which takes it before the constraints.
+/// own step. The same bits either way. The motion of the step without a hold (`free`: its turn
+/// rate and motion) comes from the caller, which takes it before the constraints.
 #[allow(clippy::too_many_arguments)]
 fn steer(
     params: &Params,

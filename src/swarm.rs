@@ -59,10 +59,10 @@ pub struct Cluster {
     /// The distance fed to `ς` (eq. `eq_switch_func` with `R_c`): `|p_i − p̃_o|`. For
     /// [`Avoidance::Exit`] it is taken as `|p_j − p_i|·w_i/(w_i + w_j)`, the neighbour's
     /// distance times the share of the way at which `p̃_o` stands
-    /// ([`virtual_obstacle_between`]): the same length to a few ulps, from the distance the
-    /// choice of the neighbour has measured, where `|p_i − p̃_o|` waits on `p̃_o` and then
-    /// takes a square root of its own (a circling robot's command waits on it: README,
-    /// Performance).
+    /// ([`virtual_obstacle_between`]): the same length up to rounding (within eight machine
+    /// epsilons of the coordinates), from the distance the choice of the neighbour has
+    /// measured, where `|p_i − p̃_o|` waits on `p̃_o` and then takes a square root of its own
+    /// (a circling robot's command waits on it: README, Performance).
     pub distance: f64,
     /// [`Avoidance::Exit`]: how far the robot is from the avoided neighbour's safe disc,
     /// `d − 2·r_ij`. The controller lets the neighbour go, as it does an obstacle
