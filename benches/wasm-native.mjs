@@ -5,12 +5,14 @@
 // each round's pair of ms per step on stderr.
 //
 //   make build-wasm && cargo build --release
-//   node benches/wasm-native.mjs --robots 1000 --steps 100 --rounds 40
+//   taskset -c 0 node benches/wasm-native.mjs --robots 1000 --steps 100 --rounds 40
 //
-// Why rounds: on a virtual machine whose host is shared the speed of a core can change by half
-// from one second to the next (README, Performance, "On another machine"), so that one run of
-// each build, minutes apart, measures the host as much as the builds. A round takes a fraction
-// of a second, and the median of the rounds' ratios sees both builds under the same load.
+// Why rounds, on one core: on a virtual machine whose host is shared the speed of a core can
+// change by half from one second to the next, and two cores can differ as much at the same
+// moment (README, Performance, "On another machine"), so that one run of each build, seconds
+// apart, measures the host as much as the builds. A round takes a fraction of a second, the
+// median of the rounds' ratios sees both builds under the same load, and `taskset` keeps this
+// process and its native children on the same core.
 
 import { readFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
