@@ -1,4 +1,4 @@
-// The command-line options of the wasm benchmarks (`wasm.mjs`, `wasm-chromium.mjs`).
+// The command-line options of the wasm benchmarks (`wasm.mjs`, `wasm-chromium.mjs`, `wasm-native.mjs`).
 
 /** The value after `--name`, as a whole number, or `fallback`; exits with a message otherwise. */
 export function option(name, fallback) {

@@ -14,11 +14,11 @@
 // median of the rounds' ratios sees both builds under the same load, and `taskset` keeps this
 // process and its native children on the same core.
 
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
-import { performance } from 'node:perf_hooks';
 import init, { CrowdBench } from '../www/pkg/dvf.js';
+import { msPerStep, warmUp } from './crowd-bench.mjs';
 import { option } from './options.mjs';
 
 const robots = option('robots', 1000);
@@ -37,6 +37,7 @@ await init({
 
 /** Milliseconds per step of `steps` steps of the crowd in the native build, on one thread. */
 function native() {
+  if (!existsSync(dvf)) throw new Error(`${dvf}: not built; run \`cargo build --release\` first`);
   const out = execFileSync(dvf, ['bench', '--robots', String(robots), '--steps', String(steps)], {
     env: { ...process.env, RAYON_NUM_THREADS: '1' },
   });
@@ -48,34 +49,20 @@ function native() {
   return JSON.parse(line).ms_per_step;
 }
 
-/** The same in this process's wasm module (a fresh crowd at t = 0, as `dvf bench` times). */
-function wasm() {
-  const bench = new CrowdBench(robots, 0);
-  try {
-    const start = performance.now();
-    bench.step(steps);
-    return (performance.now() - start) / steps;
-  } finally {
-    bench.free();
-  }
-}
-
-// The module into V8's optimising tier first (see benches/wasm.mjs).
-const warm = new CrowdBench(robots, 0);
-try {
-  for (const until = performance.now() + warmup; performance.now() < until; ) warm.step(10);
-} finally {
-  warm.free();
-}
-
 const ratios = [];
-for (let k = 0; k < rounds; k++) {
-  const n = native();
-  const w = wasm();
-  ratios.push(w / n);
-  process.stderr.write(`${n.toFixed(3)}/${w.toFixed(3)} `);
+try {
+  warmUp(CrowdBench, robots, 0, warmup);
+  for (let k = 0; k < rounds; k++) {
+    const n = native();
+    const w = msPerStep(CrowdBench, robots, 0, steps);
+    ratios.push(w / n);
+    process.stderr.write(`${n.toFixed(3)}/${w.toFixed(3)} `);
+  }
+  process.stderr.write('\n');
+} catch (e) {
+  console.error(e.message ?? String(e));
+  process.exit(2);
 }
-process.stderr.write('\n');
 ratios.sort((a, b) => a - b);
 const r = (x) => x.toFixed(3);
 console.log(

@@ -15,8 +15,8 @@
 
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { performance } from 'node:perf_hooks';
 import init, { CrowdBench } from '../www/pkg/dvf.js';
+import { msPerStep, warmUp } from './crowd-bench.mjs';
 import { option } from './options.mjs';
 
 const robots = option('robots', 1000);
@@ -29,25 +29,12 @@ const wasmPath =
   other >= 0 ? process.argv[other + 1] : fileURLToPath(new URL('../www/pkg/dvf_bg.wasm', import.meta.url));
 await init({ module_or_path: readFileSync(wasmPath) });
 
-let bench;
 try {
   if (steps < 1) throw new Error(`steps: must be at least 1, not ${steps}`);
-  if (warmup > 0) {
-    const warm = new CrowdBench(robots, obstacles);
-    try {
-      for (const until = performance.now() + warmup; performance.now() < until; ) warm.step(10);
-    } finally {
-      warm.free();
-    }
-  }
-  bench = new CrowdBench(robots, obstacles);
-  const start = performance.now();
-  bench.step(steps);
-  const ms = (performance.now() - start) / steps;
+  warmUp(CrowdBench, robots, obstacles, warmup);
+  const ms = msPerStep(CrowdBench, robots, obstacles, steps);
   console.log(`{"robots": ${robots}, "steps": ${steps}, "obstacles": ${obstacles}, "ms_per_step": ${ms}}`);
 } catch (e) {
   console.error(e.message ?? String(e));
   process.exit(2);
-} finally {
-  bench?.free();
 }
