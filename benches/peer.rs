@@ -13,6 +13,13 @@
 //!   cargo bench --bench peer                 # 1,000 robots: every phase
 //!   cargo bench --bench peer -- 10000 open   # 10,000 robots, open space only
 //!   cargo bench --bench peer -- 1000 jam     # open space and the jam, not the whole run
+//!   cargo bench --bench peer -- 1000 profile # the cost of a step along the whole run
+//!
+//! `profile` times windows of [`PROFILE_STEPS`] steps from the states every
+//! [`PROFILE_EVERY_S`] seconds of each planner's run, in rounds over all of them (both planners
+//! in each round), and prints each window's median over the rounds and its ratio to the first
+//! window's, then each planner's dearest window over its first and over the cheapest before
+//! it: how the cost moves through the crossing, whichever window one calls open space.
 //!
 //! ORCA's agents are holonomic discs of radius `r_ij` with the crowd's speed limit, preferring
 //! the velocity straight to their goal (slowing to land on it); an agent has arrived within
@@ -35,6 +42,12 @@ const TIME_HORIZON: f32 = 3.0;
 const OPEN_S: f64 = 2.0;
 /// Steps timed in the jam (around the middle of the crossing).
 const JAM_STEPS: usize = 200;
+/// `profile`: the steps of a window, ...
+const PROFILE_STEPS: usize = 50;
+/// ... the seconds between two windows' starts, ...
+const PROFILE_EVERY_S: f64 = 5.0;
+/// ... and the rounds over all windows (the median is quoted).
+const PROFILE_ROUNDS: usize = 9;
 /// RVO2's usual neighbourhood, ORCA's second setting: the nearest this many agents within
 /// [`RVO2_RADIUS`].
 const RVO2_NEIGHBOURS: usize = 10;
@@ -188,6 +201,105 @@ fn turns<T: Clone>(open: &T, jam: &T, step: fn(&mut T)) -> (f64, f64) {
     (a / 10.0, b / 10.0)
 }
 
+/// The states of a run from `start`, every `every` steps until `done` or `end` steps.
+fn marks<T: Clone>(
+    start: T,
+    step: fn(&mut T),
+    done: impl Fn(&T) -> bool,
+    every: usize,
+    end: usize,
+) -> Vec<T> {
+    let (mut x, mut out, mut k) = (start, Vec::new(), 0);
+    loop {
+        out.push(x.clone());
+        for _ in 0..every {
+            step(&mut x);
+        }
+        k += every;
+        if k >= end || done(&x) {
+            return out;
+        }
+    }
+}
+
+/// The median of `v` (sorted in place).
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// `profile`: each window's median milliseconds per step, DVF's and ORCA's (`None` past the
+/// end of ORCA's run), and the line of each planner's dearest window.
+fn profile(
+    s: &Scenario,
+    serial: impl Fn(&Scenario) -> Simulation,
+    report: &mut impl FnMut(String),
+) {
+    let every = (PROFILE_EVERY_S / s.dt).round() as usize;
+    let dvf = marks(serial(s), Simulation::step, all_converged, every, s.steps());
+    let orca = marks(
+        Orca::new(s),
+        Orca::step,
+        Orca::all_arrived,
+        every,
+        s.steps(),
+    );
+    let mut times = vec![(Vec::new(), Vec::new()); dvf.len().max(orca.len())];
+    for _ in 0..PROFILE_ROUNDS {
+        for (k, (d, o)) in times.iter_mut().enumerate() {
+            if let Some(x) = dvf.get(k) {
+                let mut x = x.clone();
+                d.push(time(PROFILE_STEPS, || x.step()));
+            }
+            if let Some(x) = orca.get(k) {
+                let mut x = x.clone();
+                o.push(time(PROFILE_STEPS, || x.step()));
+            }
+        }
+    }
+    let dvf_ms: Vec<f64> = times
+        .iter_mut()
+        .filter(|t| !t.0.is_empty())
+        .map(|t| median(&mut t.0))
+        .collect();
+    let orca_ms: Vec<f64> = times
+        .iter_mut()
+        .filter(|t| !t.1.is_empty())
+        .map(|t| median(&mut t.1))
+        .collect();
+    // A window's milliseconds and their ratio to the first window's, `null` where the planner's
+    // run had ended.
+    let window = |ms: &[f64], k: usize| {
+        ms.get(k).map_or(("null".into(), "null".into()), |m| {
+            (format!("{m:.4}"), format!("{:.3}", m / ms[0]))
+        })
+    };
+    for k in 0..times.len() {
+        let ((d, d_first), (o, o_first)): ((String, String), (String, String)) =
+            (window(&dvf_ms, k), window(&orca_ms, k));
+        report(format!(
+            r#"{{"robots": {}, "phase": "profile", "t": {:.1}, "dvf_ms_per_step": {d}, "dvf_over_first": {d_first}, "orca_ms_per_step": {o}, "orca_over_first": {o_first}}}"#,
+            s.robots.len(),
+            (k * every) as f64 * s.dt,
+        ));
+    }
+    for (planner, ms) in [("dvf", &dvf_ms), ("orca", &orca_ms)] {
+        let (at, peak) = ms
+            .iter()
+            .enumerate()
+            .fold((0, 0.0), |m, (k, &x)| if x > m.1 { (k, x) } else { m });
+        // Open space at its cheapest: the cheapest window before the dearest.
+        let least = ms[..=at].iter().copied().fold(f64::INFINITY, f64::min);
+        report(format!(
+            r#"{{"robots": {}, "phase": "profile, dearest", "planner": "{planner}", "t": {:.1}, "ms_per_step": {peak:.4}, "over_first": {:.3}, "over_cheapest_before": {:.3}}}"#,
+            s.robots.len(),
+            (at * every) as f64 * s.dt,
+            peak / ms[0],
+            peak / least
+        ));
+    }
+}
+
 fn all_converged(sim: &Simulation) -> bool {
     let p = sim.params();
     sim.robots()
@@ -206,6 +318,20 @@ fn main() {
     let s = crowd(n);
     let steps_of = |seconds: f64| (seconds / s.dt).round() as usize;
     let mut lines = Vec::new();
+    // One thread each, as ORCA here runs (the threads have their own figure below).
+    let serial = |s: &Scenario| {
+        let mut sim = Simulation::new(s);
+        sim.set_parallel(false);
+        sim
+    };
+    if args.iter().any(|a| a == "profile") {
+        profile(&s, serial, &mut |line| {
+            println!("{line}");
+            lines.push(line);
+        });
+        append(&lines);
+        return;
+    }
     let mut report = |phase: &str, dvf: f64, orca: f64, extra: String| {
         let line = format!(
             r#"{{"robots": {n}, "phase": "{phase}", "dvf_ms_per_step": {dvf:.4}, "orca_ms_per_step": {orca:.4}, "orca_over_dvf": {:.3}{extra}}}"#,
@@ -215,12 +341,6 @@ fn main() {
         lines.push(line);
     };
 
-    // One thread each, as ORCA here runs (the threads have their own figure below).
-    let serial = |s: &Scenario| {
-        let mut sim = Simulation::new(s);
-        sim.set_parallel(false);
-        sim
-    };
     // Open space, alternating three times, after a window of each left untimed: the first
     // window of a process runs cold (fresh memory, caches, branch history), and took DVF some
     // 10 % longer than the next ones.
@@ -327,13 +447,18 @@ fn main() {
         println!("{line}");
         lines.push(line);
     }
+    append(&lines);
+}
+
+/// Appends `lines` to `test-results/bench-peer.jsonl`.
+fn append(lines: &[String]) {
     let _ = std::fs::create_dir_all("test-results");
     if let Ok(mut f) = std::fs::OpenOptions::new()
         .create(true)
         .append(true)
         .open("test-results/bench-peer.jsonl")
     {
-        for l in &lines {
+        for l in lines {
             let _ = writeln!(f, "{l}");
         }
     }
