@@ -228,8 +228,8 @@ fn median(v: &mut [f64]) -> f64 {
     v[v.len() / 2]
 }
 
-/// `profile`: each window's median milliseconds per step, DVF's and ORCA's (`None` past the
-/// end of ORCA's run), and the line of each planner's dearest window.
+/// `profile`: a line for each window, with DVF's and ORCA's median milliseconds per step
+/// (`null` past the end of a planner's run), then a line for each planner's dearest window.
 fn profile(
     s: &Scenario,
     serial: impl Fn(&Scenario) -> Simulation,
