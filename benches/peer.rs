@@ -30,6 +30,7 @@
 use dodgy_2d::{Agent, AvoidanceOptions, Vec2};
 use dvf::grid::Neighbours;
 use dvf::presets::crowd;
+use dvf::sweep::Quantiles;
 use dvf::{Scenario, Simulation};
 use glam::DVec2;
 use std::borrow::Cow;
@@ -222,12 +223,6 @@ fn marks<T: Clone>(
     }
 }
 
-/// The median of `v` (sorted in place).
-fn median(v: &mut [f64]) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
 /// `profile`: a line for each window, with DVF's and ORCA's median milliseconds per step
 /// (`null` past the end of a planner's run), then a line for each planner's dearest window.
 fn profile(
@@ -244,29 +239,25 @@ fn profile(
         every,
         s.steps(),
     );
-    let mut times = vec![(Vec::new(), Vec::new()); dvf.len().max(orca.len())];
+    let windows = dvf.len().max(orca.len());
+    let (mut dvf_times, mut orca_times) =
+        (vec![Vec::new(); dvf.len()], vec![Vec::new(); orca.len()]);
     for _ in 0..PROFILE_ROUNDS {
-        for (k, (d, o)) in times.iter_mut().enumerate() {
+        for k in 0..windows {
             if let Some(x) = dvf.get(k) {
                 let mut x = x.clone();
-                d.push(time(PROFILE_STEPS, || x.step()));
+                dvf_times[k].push(time(PROFILE_STEPS, || x.step()));
             }
             if let Some(x) = orca.get(k) {
                 let mut x = x.clone();
-                o.push(time(PROFILE_STEPS, || x.step()));
+                orca_times[k].push(time(PROFILE_STEPS, || x.step()));
             }
         }
     }
-    let dvf_ms: Vec<f64> = times
-        .iter_mut()
-        .filter(|t| !t.0.is_empty())
-        .map(|t| median(&mut t.0))
-        .collect();
-    let orca_ms: Vec<f64> = times
-        .iter_mut()
-        .filter(|t| !t.1.is_empty())
-        .map(|t| median(&mut t.1))
-        .collect();
+    let median = |times: Vec<Vec<f64>>| -> Vec<f64> {
+        times.into_iter().map(|t| Quantiles::of(t).p50).collect()
+    };
+    let (dvf_ms, orca_ms) = (median(dvf_times), median(orca_times));
     // A window's milliseconds and their ratio to the first window's, `null` where the planner's
     // run had ended.
     let window = |ms: &[f64], k: usize| {
@@ -274,7 +265,7 @@ fn profile(
             (format!("{m:.4}"), format!("{:.3}", m / ms[0]))
         })
     };
-    for k in 0..times.len() {
+    for k in 0..windows {
         let ((d, d_first), (o, o_first)): ((String, String), (String, String)) =
             (window(&dvf_ms, k), window(&orca_ms, k));
         report(format!(
