@@ -12,6 +12,7 @@ import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { performance } from 'node:perf_hooks';
 import { fileURLToPath } from 'node:url';
 import init, { Playground } from '../www/pkg/dvf.js';
+import { quantile } from './quantile.mjs';
 
 /** The value after `--name` as a number, or `fallback`. */
 function option(name, fallback) {
@@ -31,12 +32,6 @@ const budget = option('budget', Number.POSITIVE_INFINITY);
 
 const wasmPath = fileURLToPath(new URL('../www/pkg/dvf_bg.wasm', import.meta.url));
 const { memory } = await init({ module_or_path: readFileSync(wasmPath) });
-
-/** The q-quantile of `values` (nearest rank). */
-function quantile(values, q) {
-  const s = [...values].sort((a, b) => a - b);
-  return s[Math.min(s.length - 1, Math.max(0, Math.ceil(q * s.length) - 1))];
-}
 
 let failed = false;
 const lines = [];

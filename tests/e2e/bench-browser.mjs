@@ -31,6 +31,7 @@
 
 import { writeFileSync } from 'node:fs';
 import { check, checkQuiet, drag, EXAMPLE4, join, predictions, RESULTS, run, waitLoaded } from './lib.mjs';
+import { quantile } from '../../benches/quantile.mjs';
 
 const VIEWPORT = { width: 1280, height: 800 };
 const PG = 'dvf-playground';
@@ -68,12 +69,6 @@ function report(figure) {
 
 /** `v` rounded to `digits` decimals, as a number. */
 const round = (v, digits = 2) => Number(v.toFixed(digits));
-
-/** The q-quantile of `values` (sorted copy, nearest rank). */
-function quantile(values, q) {
-  const s = [...values].sort((a, b) => a - b);
-  return s[Math.min(s.length - 1, Math.max(0, Math.ceil(q * s.length) - 1))];
-}
 
 /** Drags robot 1 of the playground on `page` and reports the figures as `name`. */
 async function benchDrag(page, name) {
