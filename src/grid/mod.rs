@@ -111,6 +111,64 @@ mod tests {
         check(&rows, 0.0);
     }
 
+    /// `list_all_near` answers exactly whether the lists built at the old positions hold every
+    /// robot now within the reach of the robot asked about, whenever the others have moved
+    /// less than the skin: each robot moved by up to half the skin, a few by up to the whole,
+    /// and the robot asked about anywhere near. The answer is compared with the lists
+    /// themselves, robot by robot (an exact comparison of sets).
+    #[test]
+    fn lists_around_a_moved_robot_are_checked_exactly() {
+        let mut rng = XorShift(0x51_7CC1_B727_220A_u64);
+        let mut next = move || rng.unit();
+        let (reach, skin) = (3.0, 0.75);
+        let built = reach + skin;
+        let (mut kept, mut missed) = (0, 0);
+        for (n, side) in [(200, 40.0), (400, 30.0), (100, 200.0)] {
+            let was: Vec<DVec2> = (0..n)
+                .map(|_| DVec2::new(next() * side, next() * side))
+                .collect();
+            let mut g = Neighbours::new();
+            g.build(&was, built);
+            for round in 0..40 {
+                // Every robot a little, one in ten up to (not beyond) the whole skin.
+                let mut now: Vec<DVec2> = was
+                    .iter()
+                    .map(|&p| {
+                        let far = if next() < 0.1 { skin } else { 0.5 * skin };
+                        let (a, r) = (next() * std::f64::consts::TAU, next() * far * 0.999);
+                        p + r * DVec2::new(a.cos(), a.sin())
+                    })
+                    .collect();
+                let j = round % n;
+                // The robot asked about by up to three reaches.
+                let (a, r) = (next() * std::f64::consts::TAU, next() * 3.0 * reach);
+                now[j] = was[j] + r * DVec2::new(a.cos(), a.sin());
+                let all_listed = (0..n).all(|i| {
+                    i == j
+                        || now[i].distance_squared(now[j]) > reach * reach
+                        || g.of(j).contains(&(i as u32))
+                });
+                assert_eq!(
+                    g.list_all_near(&was, |i| now[i], j, reach, built),
+                    all_listed,
+                    "{n} robots in {side}, round {round}"
+                );
+                if all_listed {
+                    kept += 1;
+                } else {
+                    missed += 1;
+                }
+            }
+        }
+        // Both answers were asked for.
+        assert!(kept > 10 && missed > 10, "kept {kept}, missed {missed}");
+        // The scan over all pairs keeps no cells: rebuild.
+        let few = [DVec2::ZERO, DVec2::X];
+        let mut g = Neighbours::new();
+        g.build(&few, built);
+        assert!(!g.list_all_near(&few, |i| few[i], 0, reach, built));
+    }
+
     /// The closest pair below a limit and the smallest distance are those of the scan over
     /// all pairs (same pair, same bits), on random points of several densities.
     #[test]

@@ -172,6 +172,42 @@ impl Neighbours {
         }
     }
 
+    /// Whether the lists, last built at `was` for a reach `built`, list every robot that is
+    /// now within `reach` of robot `j`, the robots being now at `now(i)`. Robot `j` may have
+    /// moved any distance; every other robot `i` must be less than `built − reach` from
+    /// `was[i]`, for it is looked for among the cells around robot `j`'s position now, which
+    /// hold the robots within `built` of there as they were. `false` for lists that came from
+    /// the scan over all pairs (a few robots), which keeps no cells.
+    ///
+    /// A robot is listed exactly when the build's own test holds (`|p_j − p_i|² ≤ built²` at
+    /// `was`), which is taken again here with the same bits.
+    #[must_use]
+    pub fn list_all_near(
+        &self,
+        was: &[DVec2],
+        now: impl Fn(usize) -> DVec2,
+        j: usize,
+        reach: f64,
+        built: f64,
+    ) -> bool {
+        if was.len() <= FEW_ROBOTS {
+            return false;
+        }
+        let (reach2, built2) = (reach * reach, built * built);
+        let (p, p_was) = (now(j), was[j]);
+        let (runs, k) = self.cells.block(self.cells.coords(p));
+        runs[..k].iter().all(|&(from, to)| {
+            self.cells.order()[from as usize..to as usize]
+                .iter()
+                .all(|&i| {
+                    let i = i as usize;
+                    i == j
+                        || now(i).distance_squared(p) > reach2
+                        || was[i].distance_squared(p_was) <= built2
+                })
+        })
+    }
+
     /// Robot `i`'s neighbours, ascending (empty before the first build or for `i` out of range).
     #[must_use]
     pub fn of(&self, i: usize) -> &[u32] {

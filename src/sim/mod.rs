@@ -306,12 +306,14 @@ impl Simulation {
     }
 
     /// Keeps the grid's lists holding every pair within `list_reach` where the robots are
-    /// now. They are built for a reach widened by a skin of [`SKIN`]`·reach` and rebuilt only
-    /// once some robot has moved more than half the skin since (Verlet lists): until then a
-    /// pair within the reach now was within the widened reach then. Readers test the distance
-    /// (the evaluation, the metrics, `min_listed_pair_distance`), so they see exactly the pairs
-    /// within the reach, in ascending index, whenever the lists were built. A crowd at 20 m/s
-    /// (reach 10 m, skin 2.5 m) rebuilds about every sixth step.
+    /// now. They are built for a reach widened by a skin of [`SKIN`]`·reach` (Verlet lists):
+    /// while no robot has moved more than half the skin since, a pair within the reach now was
+    /// within the widened reach then. Once some robot has, they are kept while a search around
+    /// the robots that have finds them still whole ([`Self::lists_still_hold`]), and rebuilt
+    /// otherwise. Readers test the distance (the evaluation, the metrics,
+    /// `min_listed_pair_distance`), so they see exactly the pairs within the reach, in
+    /// ascending index, whenever the lists were built. A crowd at 20 m/s (reach 10 m, skin
+    /// 2.5 m) rebuilds about every seventh step in open space, and every thirteenth in its jam.
     ///
     /// `none_moved` is whether no robot has moved more than half the skin since, when the
     /// caller has found it already (the step's integration, on threads); `None` tests it here.
@@ -321,9 +323,11 @@ impl Simulation {
         }
         let reach = self.reach;
         let skin = SKIN * reach;
-        // Never built (`positions` is empty until then), or some robot moved too far since.
+        // Never built (`positions` is empty until then), or some robot moved too far since and
+        // the lists miss a pair.
         let fresh = self.positions.len() == self.robots.len()
-            && none_moved.unwrap_or_else(|| self.none_moved_beyond(self.half_skin()));
+            && (none_moved.unwrap_or_else(|| self.none_moved_beyond(self.half_skin()))
+                || self.lists_still_hold());
         if !fresh {
             // The positions packed together: the search reads them many times over, and a
             // robot's whole state is some 200 bytes.
@@ -336,6 +340,51 @@ impl Simulation {
                 self.near.build(&self.positions, reach + skin);
             }
         }
+    }
+
+    /// Whether the lists still hold every pair within their reach, once some robot has moved
+    /// more than half the skin since they were built: a pair of robots that have each moved
+    /// less is within the widened reach still (see [`Self::find_neighbours`]), and the pairs of
+    /// the robots that have moved more are looked for in the cells of the lists' last build
+    /// ([`Neighbours::list_all_near`]), which hold every robot that has moved less than the
+    /// whole skin. The lists are rebuilt instead once a robot has moved farther, or more than
+    /// one robot in [`MOVED_SHARE`] more than half the skin (each of those would cost about
+    /// as much as its share of a rebuild).
+    ///
+    /// In a jam a few robots move at the speed limit and the rest crawl: the lists are then
+    /// rebuilt once the fastest robot has crossed the whole skin, not half of it (the crowd of
+    /// 1,000 at t = 42 s: 13 robots have moved more than half the skin when the first of them
+    /// has moved the whole). In open space every robot moves about as fast as the fastest,
+    /// and the lists are rebuilt as before.
+    ///
+    /// The wasm build rebuilds instead, at half the skin: this search is 822 bytes of its
+    /// module, which stays under 250 KB (README, Performance, "The lists kept past half their
+    /// skin").
+    fn lists_still_hold(&self) -> bool {
+        if cfg!(target_arch = "wasm32") {
+            return false;
+        }
+        let half = self.half_skin();
+        let whole = 2.0 * half;
+        let most = self.robots.len() / MOVED_SHARE;
+        let mut moved = 0;
+        for (&was, r) in self.positions.iter().zip(&self.robots) {
+            if !moved_within(was, r.pose.p, whole) {
+                return false;
+            }
+            moved += usize::from(!moved_within(was, r.pose.p, half));
+            if moved > most {
+                return false;
+            }
+        }
+        let (reach, built) = (self.reach, self.reach + SKIN * self.reach);
+        let now = |i: usize| self.robots[i].pose.p;
+        (self.positions.iter().zip(&self.robots).enumerate()).all(|(j, (&was, r))| {
+            moved_within(was, r.pose.p, half)
+                || self
+                    .near
+                    .list_all_near(&self.positions, now, j, reach, built)
+        })
     }
 
     /// How far a robot may move before the lists are rebuilt: half their skin, less the
@@ -1234,6 +1283,11 @@ fn moved_within(was: DVec2, now: DVec2, half: f64) -> bool {
     was.distance_squared(now) <= half * half
 }
 
+/// Once more than one robot in this many has moved more than half the lists' skin, the lists
+/// are rebuilt rather than searched around each of those robots
+/// (`Simulation::lists_still_hold`).
+const MOVED_SHARE: usize = 8;
+
 /// The skin of the Verlet lists, relative to their reach (see `Simulation::find_neighbours`):
 /// wider lists to read against fewer rebuilds. A quarter is a usual choice for Verlet lists,
 /// and the best of three measured here (callgrind, the crowd of 1,000 on one thread, 200 steps
@@ -1297,6 +1351,43 @@ mod tests {
             prev = now;
         }
         assert!(crossings >= 1, "the run never crossed ±π");
+    }
+
+    /// Through the jam of a crowd, the lists are kept at some steps after a robot has moved
+    /// more than half their skin (`lists_still_hold`), and at every such step they list every
+    /// pair within their reach (a scan over all pairs): what the step's evaluations and
+    /// metrics read from them is then what a rebuild would have given.
+    #[test]
+    #[cfg(not(target_arch = "wasm32"))]
+    fn lists_kept_past_half_the_skin_hold_every_pair() {
+        let s = crate::presets::crowd(200);
+        let mut sim = Simulation::new(&s);
+        let (reach, n) = (sim.reach, sim.robots.len());
+        let mut kept = 0;
+        // Past the jam at the centre (about 16 s).
+        while sim.time() < 25.0 {
+            sim.step();
+            if sim.none_moved_beyond(sim.half_skin()) {
+                continue;
+            }
+            kept += 1;
+            let p = |i: usize| sim.robots[i].pose.p;
+            for i in 0..n {
+                for j in 0..n {
+                    assert!(
+                        i == j
+                            || p(i).distance_squared(p(j)) > reach * reach
+                            || sim.near.of(i).contains(&(j as u32)),
+                        "step {}: robots {i} and {j} are within the reach and not listed",
+                        sim.steps
+                    );
+                }
+            }
+        }
+        assert!(
+            kept >= 50,
+            "the lists were kept past half their skin at {kept} steps"
+        );
     }
 
     #[test]
