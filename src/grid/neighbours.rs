@@ -200,10 +200,15 @@ impl Neighbours {
             self.cells.order()[from as usize..to as usize]
                 .iter()
                 .all(|&i| {
+                    // Tested on the old positions first, which lie packed together: a robot
+                    // more than `built` from robot `j`'s position now was, and is still, beyond
+                    // `reach` of it; a robot listed is listed. Only the others are looked up
+                    // where they are now.
                     let i = i as usize;
                     i == j
-                        || now(i).distance_squared(p) > reach2
+                        || was[i].distance_squared(p) > built2
                         || was[i].distance_squared(p_was) <= built2
+                        || now(i).distance_squared(p) > reach2
                 })
         })
     }
