@@ -43,6 +43,10 @@ const TIME_HORIZON: f32 = 3.0;
 const OPEN_S: f64 = 2.0;
 /// Steps timed in the jam (around the middle of the crossing).
 const JAM_STEPS: usize = 200;
+/// The jam against open space ([`turns`]): rounds from fresh copies, the median quoted. One
+/// round is at the mercy of the host, whose cores change speed from second to second (README,
+/// Performance, "On another machine").
+const TURN_ROUNDS: usize = 9;
 /// `profile`: the steps of a window, ...
 const PROFILE_STEPS: usize = 50;
 /// ... the seconds between two windows' starts, ...
@@ -191,15 +195,23 @@ fn time(steps: usize, mut step: impl FnMut()) -> f64 {
 }
 
 /// Milliseconds per step of copies of `open` and of `jam`, each stepped on in turns of a few
-/// steps (ten turns of 20 steps: the first 2 s of open space, and the jam's 2 s from `jam`).
+/// steps (ten turns of 20 steps: the first 2 s of open space, and the jam's 2 s from `jam`),
+/// in [`TURN_ROUNDS`] rounds from fresh copies: the medians of the jam's time and of the
+/// rounds' ratios of the jam's time over open space's.
 fn turns<T: Clone>(open: &T, jam: &T, step: fn(&mut T)) -> (f64, f64) {
-    let (mut a, mut b) = (0.0, 0.0);
-    let (mut x, mut y) = (open.clone(), jam.clone());
-    for _ in 0..10 {
-        a += time(20, || step(&mut x));
-        b += time(20, || step(&mut y));
+    let (mut b, mut ratio) = (Vec::new(), Vec::new());
+    for _ in 0..TURN_ROUNDS {
+        let (mut x, mut y) = (open.clone(), jam.clone());
+        let (mut p, mut q) = (0.0, 0.0);
+        for _ in 0..10 {
+            p += time(20, || step(&mut x));
+            q += time(20, || step(&mut y));
+        }
+        b.push(q / 10.0);
+        ratio.push(q / p);
     }
-    (a / 10.0, b / 10.0)
+    let median = |v: Vec<f64>| Quantiles::of(v).p50;
+    (median(b), median(ratio))
 }
 
 /// The states of a run from `start`, every `every` steps until `done` or `end` steps.
@@ -371,8 +383,8 @@ fn main() {
         // The jam against open space, each planner on its own: copies of the state at t = 0
         // and in the jam stepped in short turns, so that both phases see the same machine load
         // (the ratio the jam's bound is about).
-        let (dvf_open, dvf_jam) = turns(&serial(&s), &sim, Simulation::step);
-        let (orca_open, orca_jam) = turns(&Orca::new(&s), &orca, Orca::step);
+        let (dvf_jam, dvf_ratio) = turns(&serial(&s), &sim, Simulation::step);
+        let (orca_jam, orca_ratio) = turns(&Orca::new(&s), &orca, Orca::step);
         report(
             "jam",
             dvf_jam,
@@ -380,8 +392,8 @@ fn main() {
             format!(
                 r#", "t": {:.1}, "dvf_jam_over_open": {:.3}, "orca_jam_over_open": {:.3}"#,
                 sim.time(),
-                dvf_jam / dvf_open,
-                orca_jam / orca_open
+                dvf_ratio,
+                orca_ratio
             ),
         );
         for _ in 0..3 {
