@@ -1297,7 +1297,7 @@ fn moved_within(was: DVec2, now: DVec2, half: f64) -> bool {
 /// Once the robots searched around since the lists were built would exceed one in this many,
 /// the lists are rebuilt instead (`Simulation::lists_still_hold`). Measured against a rebuild
 /// at half the skin (the crowd of 1,000, one thread, 200 steps from several times of the
-/// run): at t = 45 s 3–4 % less time a step with 4 or 8, from 35 and 55 s within ±1 %, and
+/// run): at t = 45 s 2–4 % less time a step with 4 or 8, from 35 and 55 s within ±1 %, and
 /// open space the same.
 const MOVED_SHARE: usize = 4;
 
