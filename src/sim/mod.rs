@@ -114,8 +114,6 @@ pub struct Simulation {
     // The Verlet lists (see `find_neighbours`): built at `positions` for `reach` and its skin.
     near: Neighbours,
     positions: Vec<DVec2>,
-    // The robots searched around since the lists were built (`lists_still_hold`).
-    searched: usize,
     // `list_reach(&params)`, once: the parameters of a simulation never change.
     reach: f64,
     // Whether the step finds each robot's slowest robots within the avoidance range
@@ -190,7 +188,6 @@ impl Simulation {
             obstacle_cells: ObstacleCells::default(),
             near: Neighbours::new(),
             positions: Vec::with_capacity(n),
-            searched: 0,
             reach: list_reach(&s.params, slowest_known),
             controller_reach: controller_reach(&s.params, slowest_known),
             slowest_known,
@@ -330,12 +327,8 @@ impl Simulation {
         // the lists miss a pair.
         let fresh = self.positions.len() == self.robots.len()
             && (none_moved.unwrap_or_else(|| self.none_moved_beyond(self.half_skin()))
-                || self.lists_still_hold().is_some_and(|searched| {
-                    self.searched += searched;
-                    true
-                }));
+                || self.lists_still_hold());
         if !fresh {
-            self.searched = 0;
             // The positions packed together: the search reads them many times over, and a
             // robot's whole state is some 200 bytes.
             self.positions.clear();
@@ -354,48 +347,44 @@ impl Simulation {
     /// less is within the widened reach still (see [`Self::find_neighbours`]), and the pairs of
     /// the robots that have moved more are looked for in the cells of the lists' last build
     /// ([`Neighbours::list_all_near`]), which hold every robot that has moved less than the
-    /// whole skin. The lists are rebuilt instead once a robot has moved farther, or once the
-    /// robots searched around since the build would exceed one in [`MOVED_SHARE`] (a search
-    /// costs about as much as a robot's share of a rebuild). Returns how many robots were
-    /// searched around, `None` when the lists are to be rebuilt.
+    /// whole skin. The lists are rebuilt instead once a robot has moved farther, or once more
+    /// than one robot in [`MOVED_SHARE`] has moved more than half the skin.
     ///
     /// In a jam a few robots move at the speed limit and the rest crawl: the lists are then
-    /// rebuilt about when the fastest robot has crossed the whole skin rather than half of it.
-    /// The crowd of 1,000 from t = 42 s: the first robot crosses half the skin 7 steps after
-    /// a build, 13 robots then, 74 by the eleventh step, and the lists are rebuilt at the
-    /// twelfth. In open space every robot moves about as fast as the fastest, and the lists
+    /// rebuilt about when the fastest robot nears the whole skin rather than half of it. The
+    /// crowd of 1,000 from t = 42 s: the first robot crosses half the skin 7 steps after a
+    /// build, 13 robots then, 74 by the eleventh step and 92 by the twelfth, when the lists are
+    /// rebuilt. In open space every robot moves about as fast as the fastest, and the lists
     /// are rebuilt as before.
     ///
     /// The wasm build rebuilds instead, at half the skin: this search is 822 bytes of its
     /// module, which stays under 250 KB (README, Performance, "The lists kept past half their
     /// skin").
-    fn lists_still_hold(&self) -> Option<usize> {
+    fn lists_still_hold(&self) -> bool {
         if cfg!(target_arch = "wasm32") {
-            return None;
+            return false;
         }
         let half = self.half_skin();
         let whole = 2.0 * half;
-        let most = (self.robots.len() / MOVED_SHARE).checked_sub(self.searched)?;
+        let most = self.robots.len() / MOVED_SHARE;
         let mut moved = 0;
         for (&was, r) in self.positions.iter().zip(&self.robots) {
             if !moved_within(was, r.pose.p, whole) {
-                return None;
+                return false;
             }
             moved += usize::from(!moved_within(was, r.pose.p, half));
             if moved > most {
-                return None;
+                return false;
             }
         }
         let (reach, built) = (self.reach, self.reach + SKIN * self.reach);
         let now = |i: usize| self.robots[i].pose.p;
-        (self.positions.iter().zip(&self.robots).enumerate())
-            .all(|(j, (&was, r))| {
-                moved_within(was, r.pose.p, half)
-                    || self
-                        .near
-                        .list_all_near(&self.positions, now, j, reach, built)
-            })
-            .then_some(moved)
+        (self.positions.iter().zip(&self.robots).enumerate()).all(|(j, (&was, r))| {
+            moved_within(was, r.pose.p, half)
+                || self
+                    .near
+                    .list_all_near(&self.positions, now, j, reach, built)
+        })
     }
 
     /// How far a robot may move before the lists are rebuilt: half their skin, less the
@@ -1294,12 +1283,17 @@ fn moved_within(was: DVec2, now: DVec2, half: f64) -> bool {
     was.distance_squared(now) <= half * half
 }
 
-/// Once the robots searched around since the lists were built would exceed one in this many,
-/// the lists are rebuilt instead (`Simulation::lists_still_hold`). Measured against a rebuild
-/// at half the skin (the crowd of 1,000, one thread, 200 steps from several times of the
-/// run): at t = 45 s 2–4 % less time a step with 4 or 8, from 35 and 55 s within ±1 %, and
-/// open space the same.
-const MOVED_SHARE: usize = 4;
+/// Once more than one robot in this many has moved more than half the lists' skin, the lists
+/// are rebuilt rather than searched around those robots (`Simulation::lists_still_hold`). A
+/// search costs about as much as a robot's share of a rebuild, and a rebuild that the lists
+/// kept past half their skin postpone is one every twelve steps or so: searching around more
+/// than a twelfth of the robots in a step costs more than the step's share of the rebuild.
+/// Measured against a rebuild at half the skin (one thread, 200 steps from several times of
+/// the run, two processes): the crowd of 1,000 at t = 45 s 0.964–0.970 of the time a step,
+/// from t = 35, 55 and 65 s 0.98–1.01, and open space 0.99–1.00. A quarter of the crowd
+/// searched around at most between two builds, tried first, left the crowd of 10,000 2.6 %
+/// slower in its jam, where one robot in ten runs.
+const MOVED_SHARE: usize = 12;
 
 /// The skin of the Verlet lists, relative to their reach (see `Simulation::find_neighbours`):
 /// wider lists to read against fewer rebuilds. A quarter is a usual choice for Verlet lists,
