@@ -321,8 +321,6 @@ impl Simulation {
         if !self.listed() {
             return;
         }
-        let reach = self.reach;
-        let skin = SKIN * reach;
         // Never built (`positions` is empty until then), or some robot moved too far since and
         // the lists miss a pair.
         let fresh = self.positions.len() == self.robots.len()
@@ -333,11 +331,12 @@ impl Simulation {
             // robot's whole state is some 200 bytes.
             self.positions.clear();
             self.positions.extend(self.robots.iter().map(|r| r.pose.p));
+            let built = self.built_reach();
             if self.threaded() {
                 #[cfg(not(target_arch = "wasm32"))]
-                self.near.build_on_threads(&self.positions, reach + skin);
+                self.near.build_on_threads(&self.positions, built);
             } else {
-                self.near.build(&self.positions, reach + skin);
+                self.near.build(&self.positions, built);
             }
         }
     }
@@ -377,7 +376,7 @@ impl Simulation {
                 return false;
             }
         }
-        let (reach, built) = (self.reach, self.reach + SKIN * self.reach);
+        let (reach, built) = (self.reach, self.built_reach());
         let now = |i: usize| self.robots[i].pose.p;
         (self.positions.iter().zip(&self.robots).enumerate()).all(|(j, (&was, r))| {
             moved_within(was, r.pose.p, half)
@@ -385,6 +384,12 @@ impl Simulation {
                     .near
                     .list_all_near(&self.positions, now, j, reach, built)
         })
+    }
+
+    /// The reach the lists are built for: their reach widened by the skin. The search of
+    /// [`Self::lists_still_hold`] takes the build's test again with it, so both take it here.
+    fn built_reach(&self) -> f64 {
+        self.reach + SKIN * self.reach
     }
 
     /// How far a robot may move before the lists are rebuilt: half their skin, less the
