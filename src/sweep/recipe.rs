@@ -1,0 +1,108 @@
+//! What a sweep draws from: the family of scenes, the ranges of counts and sizes, the area,
+//! the duration and the method's parameters.
+
+use crate::params::Params;
+use serde::{Deserialize, Serialize};
+use std::ops::RangeInclusive;
+
+/// The step of every random scenario (s).
+pub const DT: f64 = 0.01;
+
+/// The kind of scene a sweep draws.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Family {
+    /// Robots and obstacles anywhere in the area ([`random_scenario`](super::random_scenario)).
+    #[default]
+    Random,
+    /// Robots from a column on the left through a row of obstacles into a grid, a line or a
+    /// ring of goal slots ([`formation_scenario`](super::formation_scenario)).
+    Formation,
+    /// [`random_scenario`](super::random_scenario) with more robots and obstacles ([`Recipe::dense`]).
+    Dense,
+}
+
+/// What [`random_scenario`](super::random_scenario) and [`formation_scenario`](super::formation_scenario) draw from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Recipe {
+    /// The kind of scene.
+    pub family: Family,
+    /// Number of robots, drawn uniformly from this range.
+    pub robots: RangeInclusive<usize>,
+    /// Number of obstacles, drawn uniformly from this range.
+    pub obstacles: RangeInclusive<usize>,
+    /// Side of the square area `[0, side]²` (m) that holds starts, goals and obstacle centres.
+    pub side: f64,
+    /// Obstacle disc radius `r_o` (m), uniform.
+    pub obstacle_radius: RangeInclusive<f64>,
+    /// Width of the influence ring `R_o − r_o` (m), uniform.
+    pub ring_width: RangeInclusive<f64>,
+    /// Least distance between two starts and between two goals, in units of `safe_radius`.
+    pub separation: f64,
+    /// [`Family::Formation`]: the distance between neighbouring goal slots, in units of
+    /// `safe_radius`, uniform (at least 2, so that the goals can be held apart).
+    pub spacing: RangeInclusive<f64>,
+    /// Simulated seconds.
+    pub duration: f64,
+    /// The method's parameters.
+    pub params: Params,
+}
+
+impl Default for Recipe {
+    /// 4 to 16 robots and 0 to 5 obstacles (`r_o` 1 … 8, rings 1 … 5 wide) in a 100 × 100
+    /// area, poses `3·safe_radius` apart, 120 s, default parameters.
+    fn default() -> Self {
+        Self {
+            family: Family::Random,
+            spacing: 3.0..=6.0,
+            robots: 4..=16,
+            obstacles: 0..=5,
+            side: 100.0,
+            obstacle_radius: 1.0..=8.0,
+            ring_width: 1.0..=5.0,
+            separation: 3.0,
+            duration: 120.0,
+            params: Params::default(),
+        }
+    }
+}
+
+impl Recipe {
+    /// The dense family: 24 to 64 robots and 0 to 8 obstacles in the same area, poses
+    /// `3·safe_radius` apart, 200 s.
+    #[must_use]
+    pub fn dense() -> Self {
+        Self {
+            family: Family::Dense,
+            robots: 24..=64,
+            obstacles: 0..=8,
+            duration: 200.0,
+            ..Self::default()
+        }
+    }
+
+    /// The formation family: 9 to 25 robots, 0 to 3 obstacles on the way, goal slots 3 to 6
+    /// safe radii apart, 300 s (see [`formation_scenario`](super::formation_scenario)).
+    #[must_use]
+    pub fn formation() -> Self {
+        Self {
+            family: Family::Formation,
+            robots: 9..=25,
+            obstacles: 0..=3,
+            obstacle_radius: 1.0..=4.0,
+            ring_width: 1.0..=3.0,
+            duration: 300.0,
+            ..Self::default()
+        }
+    }
+
+    /// The recipe of `family` with its default ranges.
+    #[must_use]
+    pub fn of(family: Family) -> Self {
+        match family {
+            Family::Random => Self::default(),
+            Family::Formation => Self::formation(),
+            Family::Dense => Self::dense(),
+        }
+    }
+}
