@@ -4,7 +4,8 @@
 //! the exit code, the JSON (or CSV) on stdout, and the single line on stderr for bad input.
 //! The field test evaluates the paper's formulas independently of the crate (3×3 homogeneous
 //! matrices, explicit inverse and product, eq. `eq_phi_def` as printed).
-#![cfg(not(target_arch = "wasm32"))]
+// The binary exists natively and with the `cli` feature only.
+#![cfg(all(not(target_arch = "wasm32"), feature = "cli"))]
 
 use serde_json::Value;
 use std::f64::consts::{FRAC_PI_2, PI};

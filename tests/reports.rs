@@ -8,6 +8,9 @@
 //! To rewrite one: `cargo run --release -- simulate --preset NAME > tests/data/reports/NAME.json`
 //! (the sweeps: the arguments in [`SWEEPS`]).
 
+// The reports come from the binary, which exists with the `cli` feature only.
+#![cfg(feature = "cli")]
+
 use std::path::PathBuf;
 use std::process::Command;
 
