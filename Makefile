@@ -10,20 +10,20 @@ tools:
 	bash .ci/install
 
 # The registry's sources, whose paths the module's panic messages name, are shortened to each
-# crate's own folder (`serde_json-1.0.154/src/de.rs`): 353 bytes of the module's budget. Found
-# once the crates are fetched, for the wasm target only, so that the native build and the
-# build scripts keep their cache.
+# crate's own folder (`serde_json-1.0.154/src/de.rs`): the module carries no path of the machine
+# that built it, and shorter strings. Found once the crates are fetched, for the wasm target
+# only, so that the native build and the build scripts keep their cache.
 REMAP_REGISTRY = for d in "$${CARGO_HOME:-$$HOME/.cargo}"/registry/src/*/; do \
 	  [ -d "$$d" ] && printf -- '--remap-path-prefix=%s= ' "$$d"; done
 
 # Release build of the wasm package into www/pkg (wasm-opt from npm's binaryen, see .ci/install),
-# with its TypeScript declarations (www/pkg/dvf.d.ts). The crate at opt-level 2 for wasm (3
-# natively): smaller, as fast in Node and Chromium (README, Performance). Its dependencies at
-# "z" for wasm ("s" natively, Cargo.toml): 374 bytes, which the wasm step's slowest-neighbour
-# pass needed; none of them is in the step's loop. With WebAssembly's 128-bit SIMD (every
-# current browser: Chrome 91, Firefox 89, Safari 16.4, Node 16.4 on), which LLVM uses for pairs
-# of f64 (the same IEEE operations lane by lane, so the same bits): 2.1 KB smaller, which the
-# step's loops without a branch to mispredict needed (README, Performance).
+# with its TypeScript declarations (www/pkg/dvf.d.ts). The module is what the page downloads, so
+# it is built for size: the crate at opt-level 2 for wasm (3 natively), its dependencies at "z"
+# ("s" natively, Cargo.toml), none of which is in the step's loop; `make bench` checks the
+# step's speed. With WebAssembly's 128-bit SIMD (every current browser: Chrome 91, Firefox 89,
+# Safari 16.4, Node 16.4 on), which LLVM uses for pairs of f64 and for the step's selects
+# without a branch, in fewer instructions: the same IEEE operations lane by lane, so the same
+# bits as the native build.
 build-wasm: tools
 	cargo fetch --quiet
 	CARGO_PROFILE_RELEASE_OPT_LEVEL=2 \

@@ -999,11 +999,10 @@ fn a_sweep_is_the_same_on_one_thread_and_on_many() {
 }
 
 /// A scenario that `dvf sweep --write` saved runs the same under `dvf simulate`: its JSON
-/// numbers read back to the very bits the sweep ran (scene 42 of the narrowest formations,
-/// which the sweep leaves 4 of its 19 robots short, the others arrived by 28.89 s). Scenes
-/// chosen before fail no more: 75 since parked robots step aside `2·r_ij`, 19 since the sines
-/// and cosines come from the same library in every build (`src/maths.rs`). Read a unit in the
-/// last place off, scene 19 had all its robots arrive under `simulate`.
+/// numbers read back to the very bits the sweep ran. Scene 42 of the narrowest formations
+/// fails under the sweep (4 of its 19 robots short, the others arrived by 28.89 s), so it is
+/// written; a scene read back a unit in the last place off can end otherwise, which the
+/// comparison of the two runs shows.
 #[test]
 fn a_scenario_written_by_sweep_runs_the_same_under_simulate() {
     let dir = TempFile::new("sweep-write", "d");

@@ -1,9 +1,8 @@
 //! Reports byte-identical to the stored ones: the JSON that `dvf simulate` and `dvf sweep`
-//! printed for these inputs before the code was reorganised (`tests/data/reports/`, written by
-//! the same commands from the main branch of that time). A change of layout or of internal
-//! structure must not change one bit of what the method computes; a change of the method
-//! itself shows up here first, and then the data are rewritten on purpose, with the reason in
-//! the commit.
+//! print for these inputs (`tests/data/reports/`, written by the same commands). A change of
+//! layout or of internal structure must not change one bit of what the method computes; a
+//! change of the method itself shows up here first, and then the data are rewritten on
+//! purpose, with the reason in the commit.
 //!
 //! To rewrite one: `cargo run --release -- simulate --preset NAME > tests/data/reports/NAME.json`
 //! (the sweeps: the arguments in [`SWEEPS`]).
