@@ -4,7 +4,7 @@
 PORT ?= 8080
 export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
 
-.PHONY: package docs serve build-wasm test lint lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser bench-peer picture
+.PHONY: package docs serve build-wasm test lint lint-comments lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser bench-peer picture
 
 tools:
 	bash .ci/install
@@ -53,13 +53,20 @@ serve: build-wasm
 	else rm -f www/book; fi
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
 
-lint: lint-rust lint-js
+lint: lint-comments lint-rust lint-js
 
+# Comments and docs say what the code does and why, in the present tense: no measurement deltas
+# and no history (.ci/comments.mjs lists its rules).
+lint-comments:
+	node .ci/comments.mjs
+
+# The crate's docs are checked with and without the `cli` feature (the library alone).
 lint-rust:
 	cargo fmt --check
 	cargo clippy --all-targets -- -D warnings
 	cargo clippy --target wasm32-unknown-unknown --lib --tests -- -D warnings
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps
+	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --no-default-features
 
 # The JavaScript of www/ and tests/e2e/: one linter and formatter, and the declarations
 # type-checked against the code (and against the package's own, hence the build).
