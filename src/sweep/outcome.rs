@@ -13,7 +13,7 @@ use serde::{Deserialize, Serialize};
 /// the ranges and the settings the command line can change.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RecipeKey {
-    /// The family (lines written before families existed are of the random one).
+    /// The family (a line without one is of the random family).
     #[serde(default)]
     pub family: Family,
     /// The formation family's goal spacing `[min, max]`.
