@@ -44,8 +44,7 @@ const OPEN_S: f64 = 2.0;
 /// Steps timed in the jam (around the middle of the crossing).
 const JAM_STEPS: usize = 200;
 /// The jam against open space ([`turns`]): rounds from fresh copies, the median quoted. One
-/// round is at the mercy of the host, whose cores change speed from second to second (README,
-/// Performance, "On another machine").
+/// round is at the mercy of the host, whose cores change speed from second to second.
 const TURN_ROUNDS: usize = 9;
 /// `profile`: the steps of a window, ...
 const PROFILE_STEPS: usize = 50;
@@ -345,8 +344,8 @@ fn main() {
     };
 
     // Open space, alternating three times, after a window of each left untimed: the first
-    // window of a process runs cold (fresh memory, caches, branch history), and took DVF some
-    // 10 % longer than the next ones.
+    // window of a process runs cold (fresh memory, caches, branch history), slower than the
+    // next ones.
     let open = steps_of(OPEN_S);
     {
         let mut sim = serial(&s);

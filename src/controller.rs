@@ -88,9 +88,9 @@ pub fn atan_ratio(y: f64, x: f64) -> f64 {
 /// The step from ½ to 0 at `n = g` is deliberate. A fade that went smoothly to 0 would pass
 /// through `2k_ω|θ̃|/(k_a·π)` for every heading error, and where it does a robot whose field is
 /// perpendicular to its heading (so `v = 0`) balances `k_ω θ̃` against `k_a·fade·π/2`: it sits
-/// on its goal position with its heading off (seen in formations, where a robot reaches its
-/// slot after circling others with its heading error unattended: 0.05–0.09 rad off for
-/// minutes). With the step no such balance exists while `k_a > 4k_ω` (the defaults: 10 and 1).
+/// on its goal position with its heading off (in formations, a robot that reaches its slot
+/// after circling others with its heading error unattended would stay a few hundredths of a
+/// radian off). With the step no such balance exists while `k_a > 4k_ω` (the defaults: 10 and 1).
 /// `n = g` lies far inside `tol_position`, where the field is a tiny correction.
 #[inline]
 #[must_use]

@@ -7,8 +7,8 @@
 //! world frame as `Γ̃_d = R(θ)(−φ̃)`, with `θ` the robot's attitude.
 //!
 //! Eq. `eq_DVF_arbitr` literally reads `−R(θ̃)φ̃`: that is the same velocity expressed in the
-//! *goal* frame, equal to the world-frame field only when `θ_d = 0` (see the README's notes on
-//! the paper). [`goal_frame_field`] evaluates it as written, for comparison.
+//! *goal* frame, equal to the world-frame field only when `θ_d = 0` (see
+//! docs/notes-on-the-paper.md). [`goal_frame_field`] evaluates it as written, for comparison.
 //!
 //! The field is "dynamic" because it depends on the attitude: the same point has different
 //! arrows for different `θ`.

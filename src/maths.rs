@@ -2,9 +2,8 @@
 //! port of musl's library, the one Rust's standard library itself calls in the wasm build.
 //! Every build computes them with the same code, so that a run gives the same bits natively
 //! and in the browser (`tests/data/reports/` against the wasm tests, and the book's figures
-//! against `dvf simulate --csv`). Natively it is also faster than the platform's library
-//! (glibc's, reached through a call into the shared library with its error handling): a step
-//! of the crowd of 1,000 takes fewer instructions (README, Performance). Each is within an
+//! against `dvf simulate --csv`). Natively it is inlined where the platform's library
+//! (glibc's) is a call into the shared library with its error handling. Each is within an
 //! ulp of the exact value (musl's bound).
 //!
 //! Two that a step takes for many robots are written here on musl's polynomials, without a
@@ -33,9 +32,7 @@ pub fn cos(x: f64) -> f64 {
 }
 
 /// `(sin x, cos x)`, with one argument reduction: the very bits of `sin` and `cos` apart
-/// (`sin_cos_is_sin_and_cos`). In the wasm build too, where it takes 618 bytes more than the
-/// two apart and a quarter less of the step's time in the sine and cosine (README,
-/// Performance).
+/// (`sin_cos_is_sin_and_cos`), in every build.
 #[inline]
 #[must_use]
 pub fn sin_cos(x: f64) -> (f64, f64) {
@@ -87,11 +84,10 @@ const TAN_3PI_8: f64 = 2.414_213_562_373_095;
 /// `−b/a`, at most `tan(π/8)` in magnitude, where musl's polynomial holds. One division,
 /// its operands chosen by two comparisons. Finite arguments, or one of them infinite.
 ///
-/// Not always without a branch: inlined into the controller, the choice is compiled into
-/// branches (selects of the values, and of their bits, alike), which the angle's octant
-/// mispredicts about once in two robot-steps in a jam (callgrind's branch simulation). A
-/// choice by the octant's index into three-element arrays stays branch-free but took open
-/// space's step 2–3 % longer: the reduction then goes through memory in the angle's chain.
+/// Not always without a branch: inlined into the controller, the choice may be compiled into
+/// branches (selects of the values, and of their bits, alike), which the angle's octant can
+/// mispredict in a jam. The choice stays in registers rather than indexing small arrays, which
+/// would put the reduction through memory in the angle's chain.
 #[inline]
 #[must_use]
 fn first_quadrant(a: f64, b: f64) -> f64 {
@@ -115,11 +111,9 @@ fn first_quadrant(a: f64, b: f64) -> f64 {
     // musl's two polynomials in `w² = z⁴` by Estrin's scheme, pairs of terms joined by the
     // powers `w⁴` and `w⁸`, rather than Horner's: six operations in a row after `w²` instead
     // of eleven. A circling robot's command waits on this angle (its turn rate, then the chord
-    // the barrier clamps its speed along), and in a jam nearly every robot circles (README,
-    // Performance, "The arctangent's chain"). A change of arithmetic: the same coefficients
-    // summed in another order, as accurate (against the platform's library, over 4,000,000
-    // pairs drawn as `atan2_is_the_angle` draws them: 1.26 ulps at worst, as before, and
-    // 0.1545 on average against 0.1544).
+    // the barrier clamps its speed along), and in a jam nearly every robot circles. musl's
+    // coefficients summed in another order than musl's: within 2 ulps of the platform's
+    // library, as `atan2_is_the_angle` checks.
     let w4 = w2 * w2;
     let w8 = w4 * w4;
     let s1 = w * ((AT[0] + w2 * AT[2]) + w4 * (AT[4] + w2 * AT[6]) + w8 * (AT[8] + w2 * AT[10]));
@@ -134,9 +128,7 @@ fn first_quadrant(a: f64, b: f64) -> f64 {
 /// `atan2(y, x)`, the angle of `(x, y)` in `[−π, π]`, with the signs of zeros as IEEE 754
 /// gives them ([`first_quadrant`] folded into the quadrant of `(x, y)`). Finite arguments,
 /// or one of them infinite.
-// One copy in the wasm module: smaller.
-#[cfg_attr(not(target_arch = "wasm32"), inline)]
-#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[inline]
 #[must_use]
 pub fn atan2(y: f64, x: f64) -> f64 {
     let a = first_quadrant(y.abs(), x.abs());
@@ -162,9 +154,7 @@ const S: [f64; 6] = [
 /// both ends. Taken as `sin²(πu/2)` up to `u = ½` and `1 − sin²(π(1 − u)/2)` above, the sine
 /// of at most `π/4` from musl's polynomial without a reduction, the half chosen by a select.
 /// Outside `[0, 1]` it is not the raised cosine.
-// One copy in the wasm module (the transition function is taken in a dozen places): smaller.
-#[cfg_attr(not(target_arch = "wasm32"), inline)]
-#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[inline]
 #[must_use]
 pub fn raised_cosine(u: f64) -> f64 {
     let upper = u > 0.5;
@@ -213,8 +203,8 @@ mod tests {
 
     /// [`atan2`] within 2 ulps of the platform's library (glibc's, correctly rounded in
     /// practice) over angles of every direction and pairs of every ratio of magnitudes from
-    /// 1e-12 to 1e12 (measured: 1.26 ulps at worst, where musl's is within 1), and exactly its
-    /// value on the axes, the diagonals' signs and zeros of either sign.
+    /// 1e-12 to 1e12, and exactly its value on the axes, the diagonals' signs and zeros of
+    /// either sign.
     #[test]
     fn atan2_is_the_angle() {
         let mut rng = XorShift(0x1F2E_3D4C_5B6A_7988);
@@ -260,8 +250,8 @@ mod tests {
     /// [`raised_cosine`] within 4 ulps of `sin²(πu/2)` taken with the platform's sine,
     /// relatively below `u = ½` and of 1 above (where `1 − s` rounds to ulps of 1): 2 ulps of
     /// its own (the product `πu/2`, the polynomial, the square), and up to 1.5 of the
-    /// reference's (the sine's rounding, doubled by the square, and the square's). Measured:
-    /// 3.0 at worst. 0 and 1 exactly at the ends, and non-decreasing across `u = ½`.
+    /// reference's (the sine's rounding, doubled by the square, and the square's). 0 and 1
+    /// exactly at the ends, and non-decreasing across `u = ½`.
     #[test]
     fn raised_cosine_is_the_raised_cosine() {
         use std::f64::consts::FRAC_PI_2;

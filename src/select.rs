@@ -4,12 +4,9 @@
 //! Where the condition is a coin toss, as whether a neighbour in a crowd is ahead or behind, a
 //! branch is mispredicted about half the time. These say so to the compiler
 //! (`std::hint::select_unpredictable`). On x86-64 that is enough for an integer and for a
-//! scalar whose condition is a comparison of floats; a scalar `f64` on another condition was
-//! still compiled into a branch, and `swarm::cluster` makes its condition such a comparison
-//! and keeps its nearest neighbour by place, an integer. (An earlier version masked the bits by
-//! hand; the compiler recognised the select and branched all the same. A vector's two
-//! components selected together, with the neighbour's speed beside them, took a branch for
-//! the speed.)
+//! scalar whose condition is a comparison of floats; a scalar `f64` on another condition may
+//! still be compiled into a branch, so `swarm::cluster` makes its condition such a comparison
+//! and keeps its nearest neighbour by place, an integer.
 
 /// `a` when `take`, else `b`, the same bits.
 #[inline]

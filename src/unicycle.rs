@@ -20,9 +20,7 @@ const SERIES_BELOW: f64 = 0.125;
 /// series, whose first omitted terms, `x¹⁰/39916800` and `x¹²/479001600`, are below 2.4e-17
 /// and 3e-20 there: a fifth of an ulp of 1 and less, so both are within the round-off of the
 /// library's (an ulp or two, `half_turn_is_the_sine_and_cosine`).
-// One copy in the wasm module (the barrier's three motions call it): smaller.
-#[cfg_attr(not(target_arch = "wasm32"), inline)]
-#[cfg_attr(target_arch = "wasm32", inline(never))]
+#[inline]
 #[must_use]
 fn half_turn(x: f64) -> (f64, f64) {
     if x.abs() < SERIES_BELOW {
@@ -178,8 +176,7 @@ mod tests {
 
     /// A heading kept by [`turned`] against the heading of the integrated attitude, over 10⁶
     /// steps of a steady turn (whose rounding, the same at every step, adds up) and of turns
-    /// drawn at random, on both sides of the series' bound: within 1e-9, as its doc says
-    /// (measured: 1e-10 and less).
+    /// drawn at random, on both sides of the series' bound: within 1e-9, as its doc says.
     #[test]
     fn turned_heading_stays_the_heading() {
         let dt = 0.01;

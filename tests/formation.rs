@@ -1,7 +1,7 @@
 //! Formations: robots from a column through a row of obstacles into a grid, a line or a ring
 //! of goal slots (`dvf sweep --family formation`) reach their slots with their headings,
-//! without violation and without chattering once there. Native only: the smoothness
-//! tallies are (the wasm module's size budget).
+//! without violation and without chattering once there. Native only: the sweeps run their
+//! scenes on every core (rayon).
 #![cfg(not(target_arch = "wasm32"))]
 
 use dvf::sweep::{sweep, Recipe, Summary};

@@ -193,8 +193,8 @@ impl Cells {
                     }),
             );
         }
-        // A few dozen entries, each bucket ascending already: an insertion sort, and far less
-        // code in the wasm module than a library sort.
+        // A few dozen entries, each bucket ascending already: an insertion sort, which runs
+        // in one pass over entries that are nearly in order.
         let v = &mut out[from..];
         for i in 1..v.len() {
             let x = v[i];

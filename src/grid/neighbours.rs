@@ -116,8 +116,6 @@ impl Neighbours {
     }
 
     /// The lists from the hits (`hits[..count]`, robot `i`'s from `upper[i]`).
-    // Inlined into `build` in the wasm build, which has no other caller: smaller.
-    #[cfg_attr(target_arch = "wasm32", inline(always))]
     fn rows(&mut self, n: usize, count: usize) {
         // Ascending rows without a sort. Row `i` is its neighbours of lower index, then those
         // of higher index. (1) Lengths: robot `j`'s lower neighbours are the `i` whose hits
@@ -236,7 +234,6 @@ impl Neighbours {
 /// higher index within `reach` among the 3 × 3 cells around it (a robot within reach is at most
 /// one cell away along each axis). "Within reach" is symmetric (the squared distance of a pair
 /// is the same bits either way round), so each pair is tested once.
-#[cfg_attr(target_arch = "wasm32", inline(always))]
 fn hits(
     cells: &Cells,
     points: &[DVec2],

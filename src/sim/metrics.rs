@@ -5,7 +5,6 @@
 //! (`smoothness.rs`). Planner-independent: they read poses and the neighbourhood
 //! structures only.
 
-#[cfg(not(target_arch = "wasm32"))]
 use super::smoothness::Tally;
 use super::{Neighbourhood, Robot};
 use crate::grid::{Neighbours, ObstacleCells};
@@ -19,12 +18,9 @@ pub(super) struct Metrics {
     pub(super) min_pair: Option<f64>,
     pub(super) min_clearance: Option<f64>,
     pub(super) violations: usize,
-    /// Each robot's commands ([`Tally`]). Native only: the wasm module's size budget (the page
-    /// does not show them).
-    #[cfg(not(target_arch = "wasm32"))]
+    /// Each robot's commands ([`Tally`]).
     pub(super) tallies: Vec<Tally>,
     // Whether each robot has reached its goal position (within `tol_position`) yet.
-    #[cfg(not(target_arch = "wasm32"))]
     reached: Vec<bool>,
     // The pairs `(i, j)`, `i < j`, closer than `2·r_ij`, ascending; `pair_scratch` receives the
     // current step's before the two are swapped.
@@ -56,8 +52,9 @@ pub(super) struct Observed<'a> {
     // The closest listed pair's squared distance within `list_reach` (the pairs
     // `closest_listed2` visits), when the step's evaluations found it on their way.
     pub closest2: Option<f64>,
-    /// Whether the passes over the robots run on rayon's threads (native only).
-    #[cfg(not(target_arch = "wasm32"))]
+    /// Whether the passes over the robots run on rayon's threads (never in the wasm build,
+    /// which does not read it).
+    #[cfg_attr(target_arch = "wasm32", allow(dead_code))]
     pub threaded: bool,
 }
 
@@ -69,9 +66,7 @@ impl Metrics {
             min_pair: None,
             min_clearance: None,
             violations: 0,
-            #[cfg(not(target_arch = "wasm32"))]
             tallies: vec![Tally::default(); n],
-            #[cfg(not(target_arch = "wasm32"))]
             reached: vec![false; n],
             // Room for a violating pair per robot: a violation allocates nothing.
             pair_violating: Vec::with_capacity(n),
@@ -87,11 +82,8 @@ impl Metrics {
         self.min_pair = None;
         self.min_clearance = None;
         self.violations = 0;
-        #[cfg(not(target_arch = "wasm32"))]
-        {
-            self.tallies.fill(Tally::default());
-            self.reached.fill(false);
-        }
+        self.tallies.fill(Tally::default());
+        self.reached.fill(false);
         self.pair_violating.clear();
         self.obstacle_violating.clear();
     }
@@ -101,10 +93,7 @@ impl Metrics {
         let p = o.params;
         let reach = o.reach;
         self.obstacle_scratch.clear();
-        #[cfg(not(target_arch = "wasm32"))]
-        let quick = o.threaded.then(|| self.observe_in_parallel(o));
-        #[cfg(target_arch = "wasm32")]
-        let quick: Option<(Option<f64>, bool)> = None;
+        let quick = self.observe_on_threads(o);
         // On one thread, the closest listed pair as the step's evaluations found it, or else
         // found on the way, as on threads.
         let listed = !o.independent && o.neighbourhood == Neighbourhood::Grid;
@@ -115,11 +104,8 @@ impl Metrics {
                 closest2 = closest2.min(closest_listed2(o, i));
             }
             let at_position = r.position_error() <= p.tol_position;
-            #[cfg(not(target_arch = "wasm32"))]
-            {
-                self.reached[i] |= at_position;
-                self.tallies[i].observe(r.last.command.omega, self.reached[i]);
-            }
+            self.reached[i] |= at_position;
+            self.tallies[i].observe(r.last.command.omega, self.reached[i]);
             let inside = at_position && r.heading_error_abs() <= p.tol_heading;
             settle(&mut self.inside_since[i], inside, o.time);
             // The obstacles within the reach, as the robot senses them: the clearance metric
@@ -197,8 +183,18 @@ impl Metrics {
     }
 }
 
-#[cfg(not(target_arch = "wasm32"))]
 impl Metrics {
+    /// [`Self::observe_in_parallel`] when the step runs on threads (`o.threaded`); `None`
+    /// otherwise, and always in the wasm build, which has one thread.
+    #[cfg_attr(target_arch = "wasm32", allow(unused_variables, clippy::unused_self))]
+    fn observe_on_threads(&mut self, o: &Observed<'_>) -> Option<(Option<f64>, bool)> {
+        #[cfg(not(target_arch = "wasm32"))]
+        if o.threaded {
+            return Some(self.observe_in_parallel(o));
+        }
+        None
+    }
+
     /// The pass over the robots of [`Self::observe`] (arrival, smoothness, clearance and the
     /// robots inside a disc) on rayon's threads, with the smallest distance of the pairs
     /// [`listed_pairs`] visits (`None` for none) and whether one of them is closer than
@@ -206,6 +202,7 @@ impl Metrics {
     /// a minimum is exact whatever the order of its terms, and `√` is monotone and correctly
     /// rounded (the square root of the smallest squared distance is the smallest distance).
     /// The rare step with a robot inside a disc lists those in a second, serial pass.
+    #[cfg(not(target_arch = "wasm32"))]
     fn observe_in_parallel(&mut self, o: &Observed<'_>) -> (Option<f64>, bool) {
         use rayon::prelude::*;
         let (p, reach, time) = (o.params, o.reach, o.time);
@@ -217,7 +214,7 @@ impl Metrics {
         )
             .into_par_iter()
             .enumerate()
-            .with_min_len(super::CHEAP_CHUNK)
+            .with_min_len(super::parallel::CHEAP_CHUNK)
             .map(|(i, (r, reached, tally, since))| {
                 let at_position = r.position_error() <= p.tol_position;
                 *reached |= at_position;

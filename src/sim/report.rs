@@ -2,7 +2,6 @@
 //! the run, the smallest distances, the violation events (`sim/metrics.rs` keeps them) and the
 //! smoothness of the commands ([`super::smoothness`]).
 
-#[cfg(not(target_arch = "wasm32"))]
 use super::smoothness::{Smoothness, Tally};
 use serde::Serialize;
 
@@ -20,8 +19,6 @@ pub struct RobotReport {
     /// end of the run; `None` if it was outside at the end.
     pub converged_at: Option<f64>,
     /// How smooth its turn rate was, over the run and after it reached its goal position.
-    /// Native only: the wasm module's size budget (the page does not show it).
-    #[cfg(not(target_arch = "wasm32"))]
     pub smoothness: Tally,
 }
 
@@ -48,7 +45,6 @@ pub struct Report {
     /// each time a robot enters an obstacle disc, counts once (a violation that lasts several
     /// steps is one event).
     pub violations: usize,
-    /// How smooth the robots' turn rates were, over all robots. Native only, as the robots'.
-    #[cfg(not(target_arch = "wasm32"))]
+    /// How smooth the robots' turn rates were, over all robots.
     pub smoothness: Smoothness,
 }
