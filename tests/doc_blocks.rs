@@ -8,6 +8,9 @@
 //!
 //! Rust blocks are doctests (src/doc_examples.rs); `html` and `js` blocks are loaded in Chromium
 //! by tests/e2e/book.mjs; `text` and `toml` blocks are illustrations.
+//!
+//! Native only: it runs the binary as a child process.
+#![cfg(not(target_arch = "wasm32"))]
 
 use std::fs;
 use std::path::{Path, PathBuf};
