@@ -129,3 +129,6 @@ pub use params::Params;
 pub use scenario::Scenario;
 pub use se2::Pose;
 pub use sim::{run, Neighbourhood, Report, Simulation};
+
+#[cfg(doctest)]
+mod doc_examples;

@@ -2,12 +2,14 @@
 // docs/book/src/SUMMARY.md opens in Chromium with no console message, and every figure in it
 // (loaded lazily, as the reader scrolls to it) drew. Every figure with a `time` attribute shows
 // the state of `dvf simulate --csv` at that time: each robot's pose equal to the trajectory's
-// row at that step.
+// row at that step. The API table of docs/book/src/embedding.md names exactly the attributes,
+// public members and events that www/dvf-playground.d.ts declares, and every `html` and `js`
+// block of that chapter and of README.md loads, with the package the book holds, and draws.
 //
 // Run: make test-e2e   (or: node tests/e2e/book.mjs after make docs)
 
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { canvasStats, check, checkQuiet, ROOT, run, startServer, waitLoaded } from './lib.mjs';
 
@@ -22,12 +24,95 @@ const DREW_PIXELS = 100;
 /**
  * The page runs the crate compiled to wasm, `dvf simulate` the same code natively, with the same
  * f64 arithmetic and the same maths library (src/maths.rs): the same bits, so the poses must be
- * equal (README, "The book"). The CSV writes each number so that it reads back to its bits.
+ * equal (docs/book/src/tests.md). The CSV writes each number so that it reads back to its bits.
  */
 const POSE_TOLERANCE = 0;
 
 if (!existsSync(join(BOOK, 'index.html'))) throw new Error(`${BOOK} is missing: run make docs first`);
 const chapters = [...readFileSync(SUMMARY, 'utf8').matchAll(/\]\(([\w-]+)\.md\)/g)].map((m) => `${m[1]}.html`);
+
+const DECLARATIONS = join(ROOT, 'www', 'dvf-playground.d.ts');
+const EMBEDDING = join(ROOT, 'docs', 'book', 'src', 'embedding.md');
+/** Where the table's kinds are declared: the attributes, the class's members, the events. */
+const KIND_GROUP = {
+  attribute: 'attribute',
+  method: 'member',
+  property: 'member',
+  'static property': 'member',
+  event: 'event',
+};
+
+/**
+ * The names www/dvf-playground.d.ts declares: the keys of `DvfPlaygroundAttributes`, the members
+ * of `DvfPlayground` before its diagnostics, the keys of `DvfPlaygroundEventMap`.
+ */
+function declaredApi() {
+  const dts = readFileSync(DECLARATIONS, 'utf8');
+  const names = (text) => [...text.matchAll(/^ {2}(?:static |readonly )*(\w+)\??[:(<]/gm)].map((m) => m[1]);
+  const body = (name) => dts.match(new RegExp(`interface ${name}\\b[^{]*\\{([\\s\\S]*?)\\n\\}`))[1];
+  const members = dts.match(/declare class DvfPlayground\b[^{]*\{([\s\S]*?)\/\/ Diagnostics/)[1];
+  return {
+    attribute: names(body('DvfPlaygroundAttributes')),
+    member: names(members),
+    event: names(body('DvfPlaygroundEventMap')),
+  };
+}
+
+/** The names the embedding chapter's API table gives, by group (a row may name several). */
+function documentedApi() {
+  const found = { attribute: [], member: [], event: [] };
+  for (const [, cell, kind] of readFileSync(EMBEDDING, 'utf8').matchAll(/^\| ([^|]+) \| ([a-z ]+) \|/gm)) {
+    const group = KIND_GROUP[kind];
+    if (!group) continue;
+    for (const [, name] of cell.matchAll(/`(\w+)/g)) found[group].push(name);
+  }
+  return found;
+}
+
+const declared = declaredApi();
+const documented = documentedApi();
+for (const group of Object.keys(declared)) {
+  const missing = declared[group].filter((n) => !documented[group].includes(n));
+  const extra = documented[group].filter((n) => !declared[group].includes(n));
+  check(
+    declared[group].length > 0 && missing.length === 0 && extra.length === 0,
+    `embedding.md's API table names the ${group}s of dvf-playground.d.ts (${declared[group].length}; missing: ${missing.join(', ') || 'none'}; not declared: ${extra.join(', ') || 'none'})`,
+  );
+}
+
+/** The package's entry points as a page at the book's root reaches them. */
+const SPECIFIERS = [
+  ["'dvf-playground/inline'", "'./dvf-playground/dvf-playground.inline.js'"],
+  ["'dvf-playground'", "'./dvf-playground/dvf-playground.js'"],
+];
+const ELEMENT_SCRIPT = '<script type="module" src="dvf-playground/dvf-playground.js"></script>';
+
+/**
+ * The `html` and `js` blocks of README.md and the embedding chapter, each as a page at the
+ * book's root (where the package is, as `dvf-playground/`): an `html` block as it is (with the
+ * element's script when it has none), a `js` block as a module with the package's names
+ * resolved, followed by a figure that connects after it.
+ */
+function blockPages() {
+  const pages = [];
+  for (const file of [join(ROOT, 'README.md'), EMBEDDING]) {
+    const name = file.split('/').pop();
+    for (const m of readFileSync(file, 'utf8').matchAll(/^```(html|js)\n([\s\S]*?)^```$/gm)) {
+      const line = readFileSync(file, 'utf8').slice(0, m.index).split('\n').length;
+      let body;
+      if (m[1] === 'html') body = `${m[2].includes('<script') ? '' : ELEMENT_SCRIPT}\n${m[2]}`;
+      else {
+        let js = m[2];
+        for (const [from, to] of SPECIFIERS) js = js.replaceAll(from, to);
+        body = `<script type="module">\n${js}</script>\n<script type="module">document.body.insertAdjacentHTML('beforeend', '<dvf-playground preset="example3-line-swap" readonly></dvf-playground>');</script>`;
+      }
+      const page = `doc-block-${name.replace('.md', '')}-${line}.html`;
+      writeFileSync(join(BOOK, page), `<!doctype html>\n<meta charset="utf-8">\n<title>${name}:${line}</title>\n<body>\n${body}\n</body>\n`);
+      pages.push({ page, what: `${name}:${line} (${m[1]})` });
+    }
+  }
+  return pages;
+}
 
 /** `dvf simulate --preset NAME --csv` once per preset: rows `[t, robot, x, y, θ]`. */
 const trajectories = new Map();
@@ -99,6 +184,23 @@ await run(async ({ newPage }) => {
       checkQuiet(page, chapter);
       await page.context().close();
     }
+    const blocks = blockPages();
+    for (const { page: file, what } of blocks) {
+      const page = await newPage({ viewport: { width: 1200, height: 900 } });
+      await page.goto(`${base}/${file}`);
+      await page.waitForFunction(() => document.querySelector('dvf-playground'));
+      const count = await page.evaluate(() => document.querySelectorAll('dvf-playground').length);
+      for (let k = 0; k < count; k++) {
+        const sel = `dvf-playground:nth-of-type(${k + 1})`;
+        await page.locator(sel).scrollIntoViewIfNeeded();
+        await waitLoaded(page, sel);
+        const { coloured } = await canvasStats(page, sel);
+        check(coloured > DREW_PIXELS, `${what}: figure ${k + 1} drew (${coloured} coloured pixels)`);
+      }
+      checkQuiet(page, what);
+      await page.context().close();
+    }
+    check(blocks.length >= 5, `${blocks.length} html and js blocks loaded`);
     console.log(
       `${chapters.length} chapters, ${figures} figures, ${timed} at a time; largest pose difference ${worst.toExponential(1)}`,
     );
