@@ -127,7 +127,7 @@ for (const path of files()) {
       const m = pattern.exec(joined);
       if (m && m.index < comment.length) {
         hits++;
-        console.log(`${path}:${n + 1}: ${rule}: ${comment.replace(/^[/!*\s]+/, "").trim()}`);
+        console.log(`${path}:${n + 1}: ${rule}: ${comment.replace(/^[/!*\s]+/, '').trim()}`);
       }
     }
   });

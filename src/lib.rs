@@ -122,6 +122,12 @@ mod select;
 #[cfg(test)]
 mod testing;
 
+/// The README's Rust examples, run as doctests (`cargo test --doc`) so that they compile and
+/// run as written.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
+
 pub use controller::{command, Command};
 pub use error::Error;
 pub use obstacle::Obstacle;

@@ -1,4 +1,7 @@
 //! The command line: its subcommands, their arguments and the parsers of their values.
+//!
+//! clap turns doc comments into help text, so the doc comment of a subcommand is on its variant
+//! of [`Command`] and its argument structs carry plain comments.
 
 use clap::{Args, Parser, Subcommand};
 use dvf::presets::preset;
