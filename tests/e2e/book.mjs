@@ -109,7 +109,7 @@ function blockPages() {
       const page = `doc-block-${name.replace('.md', '')}-${line}.html`;
       writeFileSync(
         join(BOOK, page),
-        `<!doctype html>\n<meta charset="utf-8">\n<title>${name}:${line}</title>\n<body>\n${body}\n</body>\n`,
+        `<!doctype html>\n<meta charset="utf-8">\n<link rel="icon" href="data:,">\n<title>${name}:${line}</title>\n<body>\n${body}\n</body>\n`,
       );
       pages.push({ page, what: `${name}:${line} (${m[1]})` });
     }
