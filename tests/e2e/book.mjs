@@ -107,7 +107,10 @@ function blockPages() {
         body = `<script type="module">\n${js}</script>\n<script type="module">document.body.insertAdjacentHTML('beforeend', '<dvf-playground preset="example3-line-swap" readonly></dvf-playground>');</script>`;
       }
       const page = `doc-block-${name.replace('.md', '')}-${line}.html`;
-      writeFileSync(join(BOOK, page), `<!doctype html>\n<meta charset="utf-8">\n<title>${name}:${line}</title>\n<body>\n${body}\n</body>\n`);
+      writeFileSync(
+        join(BOOK, page),
+        `<!doctype html>\n<meta charset="utf-8">\n<link rel="icon" href="data:,">\n<title>${name}:${line}</title>\n<body>\n${body}\n</body>\n`,
+      );
       pages.push({ page, what: `${name}:${line} (${m[1]})` });
     }
   }
