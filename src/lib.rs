@@ -122,12 +122,6 @@ mod select;
 #[cfg(test)]
 mod testing;
 
-/// The README's Rust examples, run as doctests (`cargo test --doc`) so that they compile and
-/// run as written.
-#[cfg(doctest)]
-#[doc = include_str!("../README.md")]
-struct ReadmeDoctests;
-
 pub use controller::{command, Command};
 pub use error::Error;
 pub use obstacle::Obstacle;
@@ -136,5 +130,6 @@ pub use scenario::Scenario;
 pub use se2::Pose;
 pub use sim::{run, Neighbourhood, Report, Simulation};
 
+// The Rust blocks of the README and of the book, run as doctests.
 #[cfg(doctest)]
 mod doc_examples;
