@@ -126,6 +126,6 @@ bench-browser: build-wasm
 	node tests/e2e/bench-browser.mjs
 
 # DVF against ORCA (dodgy_2d) on the crowd of 1,000, alternating in one process: open space,
-# the jam, the whole run (README, Performance); figures in test-results/bench-peer.jsonl.
+# the jam, the whole run (docs/book/src/performance.md); figures in test-results/bench-peer.jsonl.
 bench-peer:
 	cargo bench --bench peer
