@@ -110,7 +110,7 @@ export class SelectionPanel {
       if (input.value.trim() !== '' && Number.isFinite(n)) v[k] = n;
     }
     const sel = c.selection;
-    const ok = c.change(kind === 'bounds' ? 'params' : kind, () => {
+    const ok = c.gestures.change(kind === 'bounds' ? 'params' : kind, () => {
       if (kind === 'bounds') c.edit({ ...c.model, bounds: [v.xmin, v.ymin, v.xmax, v.ymax] });
       else if (kind === 'robot') c.moveRobot(sel.index, v.x, v.y, v.theta);
       else if (kind === 'goal') c.moveGoal(sel.index, v.x, v.y, v.theta);

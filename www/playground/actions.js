@@ -46,12 +46,12 @@ export function addRobotInView(c) {
   const span = Math.min(view.width, view.height) / view.scale;
   const [start, goal] = freeSpot(c.model, view.wx(view.width / 2), view.wy(view.height / 2), span);
   let index = 0;
-  const ok = c.change('add-robot', () => {
+  const ok = c.gestures.change('add-robot', () => {
     index = c.addRobot([start[0], start[1], 0], [goal[0], goal[1], 0]);
   });
   if (ok) {
-    c.selection = { kind: 'robot', index };
-    c.focusRobot = index;
+    c.select({ kind: 'robot', index });
+    c.inspect(index);
   }
 }
 
@@ -85,7 +85,7 @@ export function addObstacleInView(c) {
   const view = c.view();
   const r = (NEW_OBSTACLE_FRACTION * Math.min(view.width, view.height)) / view.scale;
   let index = 0;
-  const ok = c.change('add-obstacle', () => {
+  const ok = c.gestures.change('add-obstacle', () => {
     const center = freeObstacleSpot(
       c.model,
       c.views.poses,
@@ -96,20 +96,20 @@ export function addObstacleInView(c) {
     );
     index = c.addObstacle({ center, radius: r, influence: 2 * r });
   });
-  if (ok) c.selection = { kind: 'obstacle', index };
+  if (ok) c.select({ kind: 'obstacle', index });
 }
 
 /** Deletes the selected obstacle, or the selected robot (or the robot of the selected goal). */
 export function deleteSelection(c) {
   const sel = c.selection;
   if (!sel) return;
-  const ok = c.change('delete', () => {
+  const ok = c.gestures.change('delete', () => {
     if (sel.kind === 'obstacle') c.removeObstacle(sel.index);
     else c.removeRobot(sel.index);
   });
   if (ok) {
-    c.selection = null;
-    c.focusRobot = 0;
+    c.select(null);
+    c.inspect(0);
   }
 }
 
@@ -118,17 +118,17 @@ export function nudgeSelection(c, dx, dy, dTheta) {
   const sel = c.selection;
   const i = sel.index;
   if (sel.kind === 'robot') {
-    c.change('robot', () => {
+    c.gestures.change('robot', () => {
       const [x, y, theta] = c.views.pose(i);
       c.moveRobot(i, x + dx, y + dy, theta + dTheta);
     });
   } else if (sel.kind === 'goal') {
-    c.change('goal', () => {
+    c.gestures.change('goal', () => {
       const g = c.model.robots[i].goal;
       c.moveGoal(i, g[0] + dx, g[1] + dy, g[2] + dTheta);
     });
   } else if (sel.kind === 'obstacle') {
-    c.change('obstacle', () => {
+    c.gestures.change('obstacle', () => {
       const o = c.model.obstacles[i].center;
       c.moveObstacle(i, o[0] + dx, o[1] + dy);
     });
@@ -144,15 +144,15 @@ export function nudgeSelection(c, dx, dy, dTheta) {
  */
 export function changeParam(c, key, value) {
   if (!c.pg) return null;
-  c.begin();
+  c.gestures.begin();
   try {
     c.setParam(key, value);
   } catch (e) {
-    c.cancel();
+    c.gestures.cancel();
     return messageOf(e);
   }
   c.showMessage('');
-  c.commit('params');
+  c.gestures.commit('params');
   c.params.fill(c.model);
   return null;
 }

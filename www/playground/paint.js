@@ -58,10 +58,9 @@ export class Painter {
     this.curvesKey = '';
   }
 
-  /** New colours: the crowd's sprites and the trails are drawn anew. */
+  /** New colours: the crowd's sprites are drawn anew (the controller redraws the trails). */
   newTheme() {
     this.spriteLayer = new SpriteLayer();
-    this.c.generation += 1;
   }
 
   /**
@@ -86,7 +85,7 @@ export class Painter {
         c.requestDraw();
       }, TRAIL_SETTLE_MS);
     }
-    drawScene(ctx, view, scene, c.ghost ? () => drawGhost(ctx, view, c.ghost) : null);
+    drawScene(ctx, view, scene, c.pin.ghost ? () => drawGhost(ctx, view, c.pin.ghost) : null);
     const loop = c.loop;
     const slowed =
       loop.playing && loop.rate < loop.speed * 0.995
@@ -108,7 +107,7 @@ export class Painter {
     // Free text from the scenario: textContent only, never HTML.
     c.$('title').textContent = c.model.name;
     if (c.host.hasAttribute('controls')) {
-      this.plots.draw(scene, c.focusRobot, c.ghost);
+      this.plots.draw(scene, c.focusRobot, c.pin.ghost);
       showInspected(c.$('robot-info'), c.focusRobot, c.model.robots.length, scene.status);
       c.selectionPanel.update();
     }
@@ -152,7 +151,7 @@ export class Painter {
     const view = c.view();
     const scene = { ...this.scene(view, width, height, 1), vector: true };
     const g = /** @type {any} */ (ctx);
-    drawScene(g, view, scene, c.ghost ? () => drawGhost(g, view, c.ghost) : null);
+    drawScene(g, view, scene, c.pin.ghost ? () => drawGhost(g, view, c.pin.ghost) : null);
     stamp(g, c.model.name, clockText(scene));
     return ctx.toString();
   }
