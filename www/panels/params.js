@@ -27,17 +27,18 @@ export class ParamsPanel {
   /**
    * The form in `form`, built once the table is known (build); `apply(key, value)` gets a
    * number, `null` (an empty optional field) or the avoidance mode, and returns an error
-   * message or null.
+   * message or null; `scenario()` is the scenario shown (the controller's model, read only),
+   * null before the first.
    * @param {HTMLFormElement} form
    * @param {(key: string, value: number | string | null) => string | null} apply
+   * @param {() => Record<string, any> | null} scenario
    */
-  constructor(form, apply) {
+  constructor(form, apply, scenario) {
     this.form = form;
     this.apply = apply;
+    this.scenario = scenario;
     /** @type {Map<string, HTMLInputElement | HTMLSelectElement>} */
     this.inputs = new Map();
-    /** @type {Record<string, any> | null} the scenario last filled in */
-    this.scenario = null;
     this.error = el('p', '', 'param-error');
     this.error.setAttribute('role', 'alert');
     this.error.hidden = true;
@@ -147,15 +148,16 @@ export class ParamsPanel {
     for (const input of this.inputs.values()) input.removeAttribute('aria-invalid');
     this.error.textContent = '';
     this.error.hidden = true;
-    if (this.scenario) this.fill(this.scenario);
+    if (this.scenario()) this.fill();
   }
 
   /**
-   * Puts scenario `s`'s values into the form; not into `typing` (the field being typed in, if
+   * Puts the scenario's values into the form; not into `typing` (the field being typed in, if
    * any) unless it is null. A new value anywhere clears the marks of earlier refusals.
+   * @param {Element | null} [typing]
    */
-  fill(s, typing = null) {
-    this.scenario = s;
+  fill(typing = null) {
+    const s = this.scenario();
     for (const [key, input] of this.inputs) {
       if (input === typing) continue;
       const v = SCENARIO_FIELDS.has(key) ? s[key] : s.params[key];

@@ -153,6 +153,6 @@ export function changeParam(c, key, value) {
   }
   c.showMessage('');
   c.gestures.commit('params');
-  c.params.fill(c.model);
+  c.params.fill();
   return null;
 }

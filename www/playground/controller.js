@@ -112,7 +112,7 @@ export class Controller {
       },
       apply: (scenario) => this.edit(scenario),
       showMessage: (text) => this.showMessage(text),
-      filled: () => this.params.fill(this.model, this.root.activeElement),
+      filled: () => this.params.fill(this.root.activeElement),
       shown: () => this.toolbar.update(),
       emit: (kind) => this.#emit(kind),
     });
@@ -170,7 +170,11 @@ export class Controller {
       },
     });
     this.toolbar = new Toolbar(this);
-    this.params = new ParamsPanel(this.$('params'), (key, value) => changeParam(this, key, value));
+    this.params = new ParamsPanel(
+      this.$('params'),
+      (key, value) => changeParam(this, key, value),
+      () => this.model,
+    );
     this.results = new ResultsPanel({
       $: this.$,
       active: () => host.hasAttribute('controls'),
@@ -287,7 +291,7 @@ export class Controller {
     this.generation += 1;
     this.preset = presetName ?? this.#presetOf(this.model);
     this.toolbar.showPreset(this.preset);
-    this.params.fill(this.model, this.root.activeElement);
+    this.params.fill(this.root.activeElement);
     this.toolbar.update();
     this.results.stale();
     this.requestDraw();
