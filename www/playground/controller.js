@@ -182,7 +182,18 @@ export class Controller {
       pin: this.pin,
       showMessage: (text, options) => this.showMessage(text, options),
     });
-    this.selectionPanel = new SelectionPanel(this);
+    this.selectionPanel = new SelectionPanel({
+      form: this.$('selection'),
+      title: this.$('selection-title'),
+      selection: () => this.selection,
+      scenario: () => this.model,
+      pose: (i) => this.views.pose(i),
+      time: () => this.views.time,
+      focused: () => root.activeElement,
+      change: (kind, edits) => this.gestures.change(kind, edits),
+      edits: this,
+      message: () => this.$('message-text').textContent,
+    });
     /** The scene's colours from the stylesheet (render/theme.js), read by readTheme. */
     this.palette = readPalette(root.querySelector('.pg'));
     buildLegend(this.$('legend'));
