@@ -1,9 +1,10 @@
 // End-to-end tests of the main page as users load it: the RELEASE wasm package in www/pkg
 // (`make build-wasm`), served by python3's http.server, driven in Debian's Chromium.
-// Checks: no console error or warning; every module preloaded; high-DPI canvas; dragging a
-// robot bends its predicted path (pixels and scenario); undo/redo; presets; parameters;
-// keyboard; the URL fragment round trip; bad fragments; scenario names as text; exports (JSON,
-// CSV, PNG) and import. Behaviour only: no time is compared with a limit (the figures and
+// Checks: the wasm module's compressed size; no import cycle among www/'s modules; no console
+// error or warning; every module preloaded; high-DPI canvas; dragging a robot bends its
+// predicted path (pixels and scenario); undo/redo; presets; parameters; keyboard; the URL
+// fragment round trip; bad fragments; scenario names as text; exports (JSON, CSV, PNG) and
+// import. Behaviour only: no time is compared with a limit (the figures and
 // their budgets are bench-browser.mjs's). Everything it writes goes to test-results/ (the
 // README's picture is picture.mjs's).
 //
@@ -23,6 +24,7 @@ import {
   drag,
   EXAMPLE4,
   frames,
+  importCycles,
   join,
   predictions,
   RESULTS,
@@ -61,6 +63,11 @@ await run(async ({ base, newPage }) => {
   const wasm = readFileSync(join(ROOT, 'www', 'pkg', 'dvf_bg.wasm'));
   const gzipBytes = gzipSync(wasm, { level: WASM_GZIP_LEVEL }).length;
   console.log(`SIZE www/pkg/dvf_bg.wasm: ${wasm.length} bytes, ${gzipBytes} bytes gzipped (level ${WASM_GZIP_LEVEL})`);
+  const cycles = importCycles();
+  check(
+    cycles.length === 0,
+    `www/'s modules import no cycle (${cycles.map((c) => c.join(' → ')).join('; ') || 'none'})`,
+  );
   check(
     gzipBytes <= MAX_WASM_GZIP_BYTES,
     `the release wasm module gzipped at level ${WASM_GZIP_LEVEL} is at most ${MAX_WASM_GZIP_BYTES} bytes (${gzipBytes})`,
