@@ -28,8 +28,19 @@ export function presetLabel({ name, summary }) {
   return words ? `${head}: ${words}` : head;
 }
 
+/**
+ * What the toolbar uses of the controller: the commands its buttons and menus give, and what
+ * it shows.
+ * @typedef {Pick<import('../playground/controller.js').Controller, '$' | 'canvas' | 'clock'
+ *   | 'exportJson' | 'fit' | 'gestures' | 'help' | 'history' | 'importScenario' | 'limits'
+ *   | 'loadPreset' | 'loop' | 'messages' | 'painter' | 'pg' | 'presetName' | 'recorder'
+ *   | 'scenario' | 'selection' | 'setDisplay' | 'showMessage' | 'theta0Deg'>
+ *   & import('../playground/actions.js').ActionsHost
+ *   & import('../playground/record.js').PictureHost} ToolbarHost
+ */
+
 export class Toolbar {
-  /** @param {import('../playground/controller.js').Controller} controller */
+  /** @param {ToolbarHost} controller */
   constructor(controller) {
     const c = controller;
     const $ = c.$;

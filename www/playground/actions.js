@@ -12,7 +12,14 @@ const ADD_ROBOT_TRIES = 400;
 /** A new robot keeps this many safe radii from every robot and obstacle ring. */
 const ADD_ROBOT_GAP = 3;
 
-/** @typedef {import('./controller.js').Controller} Controller */
+/**
+ * What the actions use of the controller: its scenario, selection and view, its edit methods,
+ * one gesture, and the message.
+ * @typedef {Pick<import('./controller.js').Controller, 'addObstacle' | 'addRobot' | 'gestures'
+ *   | 'inspect' | 'model' | 'moveGoal' | 'moveObstacle' | 'moveRobot' | 'params' | 'pg'
+ *   | 'removeObstacle' | 'removeRobot' | 'select' | 'selection' | 'setParam' | 'showMessage'
+ *   | 'view' | 'views'>} ActionsHost
+ */
 
 /**
  * The first start/goal pair along a widening spiral about (x, y) that keeps clear of every
@@ -40,7 +47,10 @@ function freeSpot(s, x, y, span) {
   ];
 }
 
-/** Adds a robot, heading 0 to a goal heading 0, about the view's centre, and selects it. */
+/**
+ * Adds a robot, heading 0 to a goal heading 0, about the view's centre, and selects it.
+ * @param {ActionsHost} c
+ */
 export function addRobotInView(c) {
   const view = c.view();
   const span = Math.min(view.width, view.height) / view.scale;
@@ -59,6 +69,7 @@ export function addRobotInView(c) {
  * The first centre along a widening spiral about (x, y) where an obstacle of influence radius
  * `ring` keeps its ring clear of every other obstacle's ring and its disc clear of every
  * robot's start, pose now and goal (`poses`, flat x, y, θ); without one, (x, y).
+ * @returns {[number, number]}
  */
 function freeObstacleSpot(s, poses, x, y, radius, ring) {
   const gap = s.params?.safe_radius ?? 1;
@@ -80,7 +91,10 @@ function freeObstacleSpot(s, poses, x, y, radius, ring) {
   return [x, y];
 }
 
-/** Adds an obstacle about the view's centre, clear of the others, sized to the view, and selects it. */
+/**
+ * Adds an obstacle about the view's centre, clear of the others, sized to the view, and selects it.
+ * @param {ActionsHost} c
+ */
 export function addObstacleInView(c) {
   const view = c.view();
   const r = (NEW_OBSTACLE_FRACTION * Math.min(view.width, view.height)) / view.scale;
@@ -99,7 +113,10 @@ export function addObstacleInView(c) {
   if (ok) c.select({ kind: 'obstacle', index });
 }
 
-/** Deletes the selected obstacle, or the selected robot (or the robot of the selected goal). */
+/**
+ * Deletes the selected obstacle, or the selected robot (or the robot of the selected goal).
+ * @param {ActionsHost} c
+ */
 export function deleteSelection(c) {
   const sel = c.selection;
   if (!sel) return;
@@ -113,7 +130,10 @@ export function deleteSelection(c) {
   }
 }
 
-/** Moves the selection by (dx, dy) (m) and turns it by `dTheta` (rad). */
+/**
+ * Moves the selection by (dx, dy) (m) and turns it by `dTheta` (rad).
+ * @param {ActionsHost} c
+ */
 export function nudgeSelection(c, dx, dy, dTheta) {
   const sel = c.selection;
   const i = sel.index;
@@ -140,7 +160,7 @@ export function nudgeSelection(c, dx, dy, dTheta) {
  * `value` is a number, null (an empty optional field) or the avoidance mode. Returns the
  * core's message when it refuses the value (the scenario is kept; the panel keeps the typed
  * text), else null (the panel shows the scenario's values again).
- * @param {Controller} c
+ * @param {ActionsHost} c
  */
 export function changeParam(c, key, value) {
   if (!c.pg) return null;

@@ -153,6 +153,7 @@ export class Controller {
       requestDraw: () => this.requestDraw(),
       emit: (type, detail) => host.dispatchEvent(new CustomEvent(type, { detail })),
     });
+    /** @type {Painter} */
     this.painter = new Painter(this);
     this.recorder = new Recorder({
       canvas: this.canvas,
@@ -169,7 +170,9 @@ export class Controller {
         this.requestDraw();
       },
     });
+    /** @type {Toolbar} */
     this.toolbar = new Toolbar(this);
+    /** @type {ParamsPanel} */
     this.params = new ParamsPanel(
       this.$('params'),
       (key, value) => changeParam(this, key, value),
@@ -201,6 +204,7 @@ export class Controller {
     // The colours are known once the stylesheet has loaded, and change with the system's theme.
     root.querySelector('link[rel="stylesheet"]')?.addEventListener('load', () => this.readTheme());
     matchMedia('(prefers-color-scheme: dark)').addEventListener('change', () => this.readTheme());
+    /** @type {Input} */
     this.input = new Input(this);
   }
 

@@ -18,8 +18,19 @@ const VIEW_KEYS = [' ', 's', 'S', 'r', 'R', 'f', 'F', '+', '=', '-', '_', '?'];
 /** Zoom factor per wheel notch or +/- key. */
 const ZOOM_STEP = 1.2;
 
+/**
+ * What input uses of the controller: the canvas and its view, the selection, the edit
+ * methods, the gestures, the clock, the help and the messages.
+ * @typedef {Pick<import('./controller.js').Controller, 'camera' | 'canvas' | 'clock' | 'editable'
+ *   | 'fit' | 'gestures' | 'help' | 'host' | 'inspect' | 'messages' | 'model' | 'moveGoal'
+ *   | 'moveObstacle' | 'moveRobot' | 'pg' | 'readonly' | 'requestDraw' | 'resizeObstacle' | 'root'
+ *   | 'select' | 'selection' | 'showMessage' | 'toolbar' | 'view' | 'viewChanged' | 'views'
+ *   | 'zoom'>
+ *   & import('./actions.js').ActionsHost & import('./hit.js').HitHost} InputHost
+ */
+
 export class Input {
-  /** @param {import('./controller.js').Controller} controller */
+  /** @param {InputHost} controller */
   constructor(controller) {
     this.c = controller;
     /** The drag in progress: its target (hit.js), pointer, grip offset (m) and last point. */

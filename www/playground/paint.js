@@ -39,8 +39,17 @@ function clockText(scene) {
   return `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s`;
 }
 
+/**
+ * What the painter reads of the controller: the state a frame shows, and the parts whose
+ * per-frame text it updates.
+ * @typedef {Pick<import('./controller.js').Controller, '$' | 'canvas' | 'fieldMode' | 'focusRobot'
+ *   | 'generation' | 'host' | 'input' | 'limits' | 'loop' | 'model' | 'palette' | 'pg' | 'pin'
+ *   | 'recorder' | 'requestDraw' | 'selection' | 'selectionPanel' | 'showMessage'
+ *   | 'showSensing' | 'theta0Deg' | 'toolbar' | 'view' | 'views'>} PaintHost
+ */
+
 export class Painter {
-  /** @param {import('./controller.js').Controller} controller */
+  /** @param {PaintHost} controller */
   constructor(controller) {
     this.c = controller;
     this.trailLayer = new TrailLayer();

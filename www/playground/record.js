@@ -13,7 +13,15 @@ const RECORD_SLICE_MS = 500;
 /** The containers tried, best first. */
 const WEBM_TYPES = ['video/webm;codecs=vp9', 'video/webm;codecs=vp8', 'video/webm'];
 
-/** Draws the picture of controller `c` at `scale` times the CSS size and offers it as a PNG. */
+/**
+ * What the picture exports use of the controller.
+ * @typedef {Pick<import('./controller.js').Controller, 'model' | 'painter' | 'requestDraw' | 'showMessage'>} PictureHost
+ */
+
+/**
+ * Draws the picture of controller `c` at `scale` times the CSS size and offers it as a PNG.
+ * @param {PictureHost} c
+ */
 export function exportPng(c, scale) {
   const canvas = document.createElement('canvas');
   c.painter.draw({ canvas, dpr: scale });
@@ -24,7 +32,10 @@ export function exportPng(c, scale) {
   c.requestDraw();
 }
 
-/** Offers the picture of controller `c` as an SVG file (Painter.svg: the canvas as vectors). */
+/**
+ * Offers the picture of controller `c` as an SVG file (Painter.svg: the canvas as vectors).
+ * @param {PictureHost} c
+ */
 export function exportSvg(c) {
   let text = '';
   try {
