@@ -31,7 +31,6 @@ import { SelectionPanel } from '../panels/selection.js';
 import { Toolbar } from '../panels/toolbar.js';
 import { Playground, presetScenario } from '../pkg/dvf.js';
 import { Camera } from '../render/camera.js';
-import { readPalette, setPalette } from '../render/theme.js';
 import { changeParam } from './actions.js';
 import { Clock } from './clock.js';
 import { Pin } from './ghost.js';
@@ -197,8 +196,6 @@ export class Controller {
       edits: this,
       message: () => this.$('message-text').textContent,
     });
-    /** The scene's colours from the stylesheet (render/theme.js), read by readTheme. */
-    this.palette = readPalette(root.querySelector('.pg'));
     buildLegend(this.$('legend'));
     buildPlotsLegend(this.$('plots-legend'));
     // The colours are known once the stylesheet has loaded, and change with the system's theme.
@@ -574,13 +571,7 @@ export class Controller {
   readTheme() {
     const theme = this.host.getAttribute('theme');
     const dark = theme === 'dark' || (theme !== 'light' && matchMedia('(prefers-color-scheme: dark)').matches);
-    const pg = this.root.querySelector('.pg');
-    pg.classList.toggle('dark', dark);
-    this.palette = readPalette(pg);
-    setPalette(this.palette);
-    const p = this.palette;
-    this.painter.plots.colours = { text: p.plotText, axis: p.plotAxis, pair: p.plotPair };
-    this.painter.newTheme();
+    this.painter.readTheme(this.root.querySelector('.pg'), dark);
     this.generation += 1;
     buildLegend(this.$('legend'));
     this.requestDraw();

@@ -9,7 +9,7 @@ import { drawScene } from '../render/scene.js';
 import { drawGhost } from './ghost.js';
 import { SpriteLayer } from '../render/sprites.js';
 import { SvgContext } from '../render/svg.js';
-import { FIELD_SPACING_PX, setPalette } from '../render/theme.js';
+import { FIELD_SPACING_PX, readPalette, setPalette } from '../render/theme.js';
 import { TRAIL_SETTLE_MS, TrailLayer } from '../render/trails.js';
 import { messageOf } from './message.js';
 
@@ -43,7 +43,7 @@ function clockText(scene) {
  * What the painter reads of the controller: the state a frame shows, and the parts whose
  * per-frame text it updates.
  * @typedef {Pick<import('./controller.js').Controller, '$' | 'canvas' | 'fieldMode' | 'focusRobot'
- *   | 'generation' | 'host' | 'input' | 'limits' | 'loop' | 'model' | 'palette' | 'pg' | 'pin'
+ *   | 'generation' | 'host' | 'input' | 'limits' | 'loop' | 'model' | 'pg' | 'pin'
  *   | 'recorder' | 'requestDraw' | 'selection' | 'selectionPanel' | 'showMessage'
  *   | 'showSensing' | 'theta0Deg' | 'toolbar' | 'view' | 'views'>} PaintHost
  */
@@ -55,6 +55,8 @@ export class Painter {
     this.trailLayer = new TrailLayer();
     this.spriteLayer = new SpriteLayer();
     this.plots = new PlotsPanel(controller.$('plots'));
+    /** The scene's colours from the stylesheet (render/theme.js), read by readTheme. */
+    this.palette = readPalette(controller.$('canvas').closest('.pg'));
     /** The integral curves drawn, and what they were computed for. */
     this.curves = null;
     this.curvesKey = '';
@@ -67,8 +69,17 @@ export class Painter {
     this.curvesKey = '';
   }
 
-  /** New colours: the crowd's sprites are drawn anew (the controller redraws the trails). */
-  newTheme() {
+  /**
+   * Reads the colours of `node` (the element's `.pg`) in the `dark` theme or the light one:
+   * the painters', the plots', and the crowd's sprites drawn anew (the controller redraws the
+   * trails).
+   */
+  readTheme(node, dark) {
+    node.classList.toggle('dark', dark);
+    this.palette = readPalette(node);
+    setPalette(this.palette);
+    const p = this.palette;
+    this.plots.colours = { text: p.plotText, axis: p.plotAxis, pair: p.plotPair };
     this.spriteLayer = new SpriteLayer();
   }
 
@@ -80,7 +91,7 @@ export class Painter {
   draw(target = null) {
     const c = this.c;
     // The module's colours are shared by every playground of the page: this one's, now.
-    setPalette(c.palette);
+    setPalette(this.palette);
     const { ctx, width, height } = target
       ? fitCanvas(target.canvas, target.dpr, [c.canvas.clientWidth, c.canvas.clientHeight])
       : fitCanvas(c.canvas);
@@ -153,7 +164,7 @@ export class Painter {
    */
   svg() {
     const c = this.c;
-    setPalette(c.palette);
+    setPalette(this.palette);
     const width = c.canvas.clientWidth;
     const height = c.canvas.clientHeight;
     const ctx = new SvgContext(width, height);
