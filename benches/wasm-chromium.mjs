@@ -6,7 +6,7 @@
 //
 // As in Node, an untimed crowd of the same size steps for MS milliseconds first (500 by
 // default), so that the timed one runs in the engine's optimising tier (Chromium takes longer to
-// get there than Node: after 200 steps of 1,000 robots it was not done), and the timed crowd
+// get there than Node, so the warm-up is by time rather than by steps), and the timed crowd
 // starts at t = 0. The page's clock (`performance.now`) is coarsened to 0.1 ms, a small part of
 // S steps.
 

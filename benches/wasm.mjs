@@ -6,9 +6,8 @@
 // Before the timed crowd, another crowd of the same size steps untimed for MS milliseconds (500
 // by default): V8 first runs a module in its baseline tier and compiles the functions it finds
 // hot with its optimising tier meanwhile, so that the first steps of a fresh page cost more than
-// the rest (1,000 robots, 200 steps: 0.35-0.38 ms a step cold, 0.29-0.30 with the optimising
-// tier from the start, `node --no-liftoff`). The timed crowd starts at t = 0 like the native
-// one. `--warmup 0` times the cold module.
+// the rest (`node --no-liftoff` starts in the optimising tier, for comparison). The timed crowd
+// starts at t = 0 like the native one. `--warmup 0` times the cold module.
 //
 // `--wasm FILE` times another build of the same crate (say, one with SIMD128) through the same
 // bindings: two builds compared in one run.

@@ -10,12 +10,13 @@
 //! Everything but `robots` is optional; unknown keys and keys given twice are errors.
 //! [`Scenario::from_json`] parses and validates, and every error names the offending field.
 //!
-//! Over 500 lines: the format and its validation are one contract, each message beside the field
-//! it checks, the whole-scenario check beside the per-robot and per-obstacle ones that edits use.
+//! The format and its validation are one contract: each message stands beside the field it
+//! checks, the whole-scenario check beside the per-robot and per-obstacle ones that edits use;
+//! the parameters are checked from their table ([`crate::params::PARAMETERS`]).
 
 use crate::error::Error;
 use crate::obstacle::Obstacle;
-use crate::params::Params;
+use crate::params::{Params, Slot, PARAMETERS};
 use crate::se2::Pose;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -239,30 +240,16 @@ impl Scenario {
                 );
             }
         }
-        for (name, v) in [
-            ("k_v", p.k_v),
-            ("k_omega", p.k_omega),
-            ("k_a", p.k_a),
-            ("transition_width", p.transition_width),
-            ("avoid_speed", p.avoid_speed),
-            ("avoid_radius", p.avoid_radius),
-            ("safe_radius", p.safe_radius),
-            ("sense_radius", p.sense_radius),
-            ("tol_position", p.tol_position),
-            ("tol_heading", p.tol_heading),
-            ("align_fade", p.align_fade),
-        ] {
-            let field = format!("params.{name}");
-            finite(&field, v)?;
-            positive(&field, v)?;
-        }
-        for (name, v) in [
-            ("v_max", p.v_max),
-            ("omega_max", p.omega_max),
-            ("barrier_rate", p.barrier_rate),
-        ] {
-            if let Some(v) = v {
-                let field = format!("params.{name}");
+        // The table's numbers first, then its optional numbers: the first offending one is named.
+        let mut copy = self.params;
+        for optional in [false, true] {
+            for row in PARAMETERS {
+                let v = match copy.slot(row.name) {
+                    Some(Slot::Number(v)) if !optional => *v,
+                    Some(Slot::Optional(Some(v))) if optional => *v,
+                    _ => continue,
+                };
+                let field = format!("params.{}", row.name);
                 finite(&field, v)?;
                 positive(&field, v)?;
             }

@@ -2,6 +2,7 @@
 //! `wasm-pack test --headless --chrome -- --test web_facade`.
 #![cfg(target_arch = "wasm32")]
 
+use dvf::params::{AVOIDANCE_MODES, PARAMETERS};
 use dvf::playground::{
     CURVE_POINTS, FIELD_STRIDE, MAX_LIVE_ROBOTS, MAX_PREDICTED_ROBOTS, MAX_TRAIL_SAMPLES,
     POSE_STRIDE, STATUS_STRIDE,
@@ -9,7 +10,8 @@ use dvf::playground::{
 use dvf::presets::{DEFAULT_PRESET, PRESETS};
 use dvf::wasm::playground::Buffer;
 use dvf::wasm::{
-    default_preset, playground_limits, preset_scenario, presets, Playground, Run, SAMPLE_STRIDE,
+    default_preset, parameters, playground_limits, preset_scenario, presets, Playground, Run,
+    SAMPLE_STRIDE,
 };
 use js_sys::Float64Array;
 use wasm_bindgen::{JsCast, JsValue};
@@ -36,6 +38,26 @@ fn preset_list_starts_with_the_default() {
     let first = js_sys::Reflect::get(&list.get(0), &"name".into()).unwrap();
     assert_eq!(first.as_string().as_deref(), Some(DEFAULT_PRESET));
     assert_eq!(default_preset(), DEFAULT_PRESET);
+}
+
+#[wasm_bindgen_test]
+fn the_parameter_table_crosses_as_rows_and_modes() {
+    let table = parameters().unwrap();
+    let field = |v: &JsValue, key: &str| js_sys::Reflect::get(v, &key.into()).unwrap();
+    let rows = js_sys::Array::from(&field(&table, "rows"));
+    assert_eq!(rows.length() as usize, PARAMETERS.len());
+    for (k, p) in PARAMETERS.iter().enumerate() {
+        let row = rows.get(k as u32);
+        assert_eq!(field(&row, "name").as_string().as_deref(), Some(p.name));
+        assert_eq!(field(&row, "symbol").as_string().as_deref(), Some(p.symbol));
+        assert_eq!(field(&row, "unit").as_string().as_deref(), Some(p.unit));
+        assert_eq!(field(&row, "panel").as_bool(), Some(p.panel));
+        let kind = field(&row, "kind").as_string().unwrap();
+        assert!(["number", "optional", "mode"].contains(&kind.as_str()));
+    }
+    let modes = js_sys::Array::from(&field(&table, "modes"));
+    let modes: Vec<String> = modes.iter().filter_map(|m| m.as_string()).collect();
+    assert_eq!(modes, AVOIDANCE_MODES);
 }
 
 #[wasm_bindgen_test]

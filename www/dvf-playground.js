@@ -126,8 +126,9 @@
 //                         `crowd-n`, `undo`, `export-json`, `import-file`, …), the parameters by
 //                         `input[name="k_v"]`
 
-import { Controller, DEFAULT_THETA0_DEG, FIELD_MODES } from './playground/controller.js';
+import { Controller, DEFAULT_THETA0_DEG } from './playground/controller.js';
 import { TEMPLATE } from './playground/template.js';
+import { FIELD_MODES } from './playground/view-state.js';
 import { setWasmSource } from './playground/wasm-views.js';
 
 /** @typedef {import('./dvf-playground.js').DvfPlayground} Declared the element's declaration */
@@ -288,10 +289,10 @@ export class DvfPlayground extends Base {
   #autoplay() {
     const c = this.#controller;
     if (!c?.pg || !this.hasAttribute('autoplay')) return;
-    if (this.getAttribute('autoplay') !== 'visible') c.play();
-    else if (!this.#onScreen) c.pause();
+    if (this.getAttribute('autoplay') !== 'visible') c.clock.play();
+    else if (!this.#onScreen) c.clock.pause();
     // Back on screen: plays on, but a run at its end starts over only with `loop`.
-    else if (!c.atEnd() || c.looping) c.play();
+    else if (!c.clock.atEnd() || c.looping) c.clock.play();
   }
 
   /** Loads the scene the attributes ask for, then resolves `loaded`. */
@@ -327,15 +328,17 @@ export class DvfPlayground extends Base {
     const t = Number(attr);
     if (attr.trim() === '' || !Number.isFinite(t))
       c.showMessage(`time="${attr}": the time must be a number of seconds`);
-    else c.seek(t);
+    else c.clock.seek(t);
   }
 
   /** `controls`, `editable`, `readonly` and `loop`: what input may do, and the end of the run. */
   #readModes() {
-    const c = this.#controller;
-    c.readonly = this.hasAttribute('readonly');
-    c.editable = !c.readonly && (this.hasAttribute('controls') || this.hasAttribute('editable'));
-    c.looping = this.hasAttribute('loop');
+    const readonly = this.hasAttribute('readonly');
+    this.#controller.setModes({
+      readonly,
+      editable: !readonly && (this.hasAttribute('controls') || this.hasAttribute('editable')),
+      looping: this.hasAttribute('loop'),
+    });
   }
 
   #readDisplayAttributes() {
@@ -381,23 +384,23 @@ export class DvfPlayground extends Base {
   }
 
   play() {
-    this.#controller?.play();
+    this.#controller?.clock.play();
   }
 
   pause() {
-    this.#controller?.pause();
+    this.#controller?.clock.pause();
   }
 
   reset() {
-    this.#controller?.reset();
+    this.#controller?.clock.reset();
   }
 
   step(n = 1) {
-    return this.#controller?.step(n) ?? 0;
+    return this.#controller?.clock.step(n) ?? 0;
   }
 
   seek(t) {
-    return this.#controller?.seek(t) ?? 0;
+    return this.#controller?.clock.seek(t) ?? 0;
   }
 
   get time() {
@@ -468,7 +471,7 @@ export class DvfPlayground extends Base {
 
   set focusRobot(i) {
     const c = this.#connected();
-    c.focusRobot = i;
+    c.inspect(i);
     c.requestDraw();
   }
 }

@@ -3,17 +3,17 @@
 // untrusted text: it is size-capped, parsed as JSON data only and checked by the core (which
 // names the offending field); nothing of it is ever HTML.
 
-import { exactJson } from './exact-json.js';
 import { Playground } from './pkg/dvf.js';
-import { POSE_STRIDE, runWorker, STATUS, STATUS_STRIDE, wasmReady } from './playground/wasm-views.js';
+import { POSE_STRIDE, STATUS, STATUS_STRIDE, wasmReady } from './playground/wasm-views.js';
 
 /** The fragment that holds a scenario starts with this. */
 export const FRAGMENT_PREFIX = '#s=';
 /** Longest fragment accepted or written (characters): what links survive being pasted. */
 export const MAX_LINK_CHARS = 64 * 1024;
 /**
- * Largest scenario file imported or fetched (bytes): the edited 10,000-robot crowd, the
- * largest scene the page shows, is about 2.4 MB as the page writes it.
+ * Largest scenario file imported or fetched (bytes): well above the edited 10,000-robot crowd,
+ * the largest scene the page shows, as the page writes it (tests/e2e/instrument.mjs imports
+ * it).
  */
 export const MAX_FILE_BYTES = 32 * 1024 * 1024;
 /**
@@ -30,7 +30,7 @@ const CSV_SLICE_MS = 30;
 
 /** The fragment for a scenario object: `#s=` and the URI-encoded compact JSON. */
 export function fragmentFor(scenario) {
-  return FRAGMENT_PREFIX + encodeURIComponent(exactJson(scenario));
+  return FRAGMENT_PREFIX + encodeURIComponent(JSON.stringify(scenario));
 }
 
 /** The field overlays a link may ask for. */
@@ -224,37 +224,12 @@ export async function fetchScenarioText(url) {
 }
 
 /**
- * Scenarios of more robots than this are written off the page's thread (the 10,000-robot
- * crowd takes about 150 ms to write, 1,000 robots about 15).
+ * Offers `scenario` as a JSON file that `dvf simulate` reads (and the page imports as the
+ * same scene: JSON's shortest digits, which the core reads back exactly).
  */
-const JSON_WORKER_ABOVE = 1000;
-
-/**
- * Offers `scenario` as a JSON file that `dvf simulate` reads; a large one is written in the
- * page's worker (playground/results-worker.js). Resolves once the file is offered; rejects
- * with the worker's error.
- */
-export async function downloadScenarioJson(scenario) {
-  const text =
-    scenario.robots.length > JSON_WORKER_ABOVE ? await jsonInWorker(scenario) : `${exactJson(scenario, 2)}\n`;
+export function downloadScenarioJson(scenario) {
+  const text = `${JSON.stringify(scenario, null, 2)}\n`;
   downloadBlob(new Blob([text], { type: 'application/json' }), `${fileStem(scenario.name)}.json`);
-}
-
-/** The JSON file of `scenario`, written in a worker of its own. */
-function jsonInWorker(scenario) {
-  return new Promise((resolve, reject) => {
-    const worker = runWorker();
-    worker.onmessage = (e) => {
-      worker.terminate();
-      if ('text' in e.data) resolve(e.data.text);
-      else reject(new Error(e.data.error));
-    };
-    worker.onerror = (e) => {
-      worker.terminate();
-      reject(new Error(e.message || 'the worker failed'));
-    };
-    worker.postMessage({ id: 0, json: scenario });
-  });
 }
 
 /** Offers CSV text `pieces` (trajectoriesCsv) as a file named after `scenario`. */

@@ -4,7 +4,7 @@
 // io.js, viewSuffix).
 
 import './dvf-playground.js';
-import { FRAGMENT_PREFIX, fragmentFor, MAX_LINK_CHARS, parseFragment, viewSuffix } from './io.js';
+import { fragmentFor, MAX_LINK_CHARS, parseFragment, viewSuffix } from './io.js';
 import { messageOf } from './playground/message.js';
 
 const playground = /** @type {import('./dvf-playground.js').DvfPlayground} */ (document.getElementById('playground'));
@@ -46,24 +46,17 @@ function writeAddress() {
 function sceneChanged() {
   // A preset by its name (a crowd of 10,000 is 600 KB of JSON); an edited scene as JSON. A
   // scene too big for a link leaves the address without one (a stale one would open another
-  // scene) and the message over the canvas says so, offering the file instead. The plain
-  // JSON's length first: the link's within a few characters, and a crowd's exact digits
-  // (fragmentFor) take longer to write than a frame.
+  // scene) and the message over the canvas says so, offering the file instead.
   // A scene of more than LINK_ROBOTS_MAX robots cannot fit at all and is not written.
   const preset = playground.presetName();
   const robots = playground.robotCount;
   const scenario = preset || robots > LINK_ROBOTS_MAX ? null : playground.scenario();
-  const plain = scenario ? FRAGMENT_PREFIX.length + encodeURIComponent(JSON.stringify(scenario)).length : 0;
-  const fragment = preset
-    ? `#${encodeURIComponent(preset)}`
-    : scenario && plain <= MAX_LINK_CHARS
-      ? fragmentFor(scenario)
-      : null;
+  const fragment = preset ? `#${encodeURIComponent(preset)}` : scenario ? fragmentFor(scenario) : null;
   scenePart = fragment && fragment.length <= MAX_LINK_CHARS ? fragment : '';
   writeAddress();
   if (!scenePart) {
     const size = scenario
-      ? `${(fragment?.length ?? plain).toLocaleString('en')} characters`
+      ? `${fragment.length.toLocaleString('en')} characters`
       : `${robots.toLocaleString('en')} robots`;
     playground.showMessage(
       `This scene is too big for a link (${size}; a link holds at most ${MAX_LINK_CHARS.toLocaleString('en')} characters, about ${LINK_ROBOTS_MAX.toLocaleString('en')} robots), so the address no longer holds it. Save it with Scenario JSON; Import… opens the file again.`,

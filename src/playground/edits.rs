@@ -12,7 +12,7 @@
 use super::{Live, MAX_LIVE_STEPS};
 use crate::error::Error;
 use crate::obstacle::Obstacle;
-use crate::params::Avoidance;
+use crate::params::{Avoidance, Slot};
 use crate::scenario::{RobotSpec, Scenario, MAX_MAGNITUDE};
 use crate::se2::Pose;
 use crate::sim::Simulation;
@@ -221,13 +221,8 @@ impl Live {
                 *x = None;
                 true
             }
-            (Some(Slot::Avoidance(x)), ParamValue::Text(t)) => {
-                let mode = match t.as_str() {
-                    "exit" => Some(Avoidance::Exit),
-                    "paper" => Some(Avoidance::Paper),
-                    _ => None,
-                };
-                mode.map(|m| *x = m).is_some()
+            (Some(Slot::Mode(x)), ParamValue::Text(t)) => {
+                Avoidance::from_name(&t).map(|m| *x = m).is_some()
             }
             _ => false,
         };
@@ -354,36 +349,14 @@ pub enum ParamValue {
     Text(String),
 }
 
-/// Where [`Live::set_param`] writes a value.
-enum Slot<'a> {
-    Number(&'a mut f64),
-    Optional(&'a mut Option<f64>),
-    Avoidance(&'a mut Avoidance),
-}
-
-/// The number, optional number or mode of `s` that `name` (a JSON key) names.
+/// The number, optional number or mode of `s` that `name` (a JSON key) names: `duration`,
+/// `dt`, or a parameter of the table ([`crate::params::PARAMETERS`]).
 fn slot<'a>(s: &'a mut Scenario, name: &str) -> Option<Slot<'a>> {
-    let p = &mut s.params;
-    Some(match name {
-        "duration" => Slot::Number(&mut s.duration),
-        "dt" => Slot::Number(&mut s.dt),
-        "k_v" => Slot::Number(&mut p.k_v),
-        "k_omega" => Slot::Number(&mut p.k_omega),
-        "k_a" => Slot::Number(&mut p.k_a),
-        "transition_width" => Slot::Number(&mut p.transition_width),
-        "avoid_speed" => Slot::Number(&mut p.avoid_speed),
-        "avoid_radius" => Slot::Number(&mut p.avoid_radius),
-        "safe_radius" => Slot::Number(&mut p.safe_radius),
-        "sense_radius" => Slot::Number(&mut p.sense_radius),
-        "tol_position" => Slot::Number(&mut p.tol_position),
-        "tol_heading" => Slot::Number(&mut p.tol_heading),
-        "align_fade" => Slot::Number(&mut p.align_fade),
-        "v_max" => Slot::Optional(&mut p.v_max),
-        "omega_max" => Slot::Optional(&mut p.omega_max),
-        "barrier_rate" => Slot::Optional(&mut p.barrier_rate),
-        "avoidance" => Slot::Avoidance(&mut p.avoidance),
-        _ => return None,
-    })
+    match name {
+        "duration" => Some(Slot::Number(&mut s.duration)),
+        "dt" => Some(Slot::Number(&mut s.dt)),
+        _ => s.params.slot(name),
+    }
 }
 
 /// The scenario checks plus the playground's step limit.

@@ -1,7 +1,8 @@
 //! The JavaScript facade (wasm32 only): the core knows nothing of JavaScript; these modules
 //! only convert.
 //!
-//! - `mod.rs`: presets, scenario checks and the playground's limits, as free functions;
+//! - `mod.rs`: presets, the parameter table, scenario checks and the playground's limits, as
+//!   free functions;
 //! - [`playground`]: `Playground`, the live, editable simulation behind `<dvf-playground>`,
 //!   its buffers read in place through one [`Playground::layout`](playground::Playground::layout);
 //! - [`run`]: `Run`, a whole recorded run; [`bench`]: `CrowdBench`, for timing;
@@ -51,6 +52,26 @@ pub fn presets() -> Result<JsValue, JsError> {
     to_js(&list)
 }
 
+/// The parameter table ([`crate::params::PARAMETERS`]) as `{rows, modes}`: `rows` is
+/// `[{name, symbol, unit, kind, range, meaning, panel}]` in the panel's order (`kind` is
+/// `"number"`, `"optional"` or `"mode"`), `modes` the avoidance modes, the default first. The
+/// page's panel and messages read it rather than naming the parameters themselves.
+///
+/// # Errors
+/// Only if the JS engine refuses to build the object.
+#[wasm_bindgen]
+pub fn parameters() -> Result<JsValue, JsError> {
+    #[derive(Serialize)]
+    struct Table {
+        rows: &'static [crate::params::Parameter],
+        modes: [&'static str; 2],
+    }
+    to_js(&Table {
+        rows: crate::params::PARAMETERS,
+        modes: crate::params::AVOIDANCE_MODES,
+    })
+}
+
 /// The name of the preset shown when nothing else is asked for.
 #[wasm_bindgen(js_name = defaultPreset)]
 #[must_use]
@@ -84,8 +105,8 @@ pub fn check_scenario(scenario: JsValue) -> Result<JsValue, JsError> {
 /// The playground's limits and records as an object, so that the page reads them rather than
 /// copying them: `{trailCapacity, predictionSamples, curvePoints, maxGridSide, maxCurveSide,
 /// maxRobots, maxPredictedRobots, crowdMax, poseStride, statusStride, statusFields, fieldStride,
-/// curveStride, sampleStride}` (`statusFields` names the values of a status record in order) (`trailCapacity` is the largest; a scene's own is
-/// [`Playground::trail_capacity`]).
+/// curveStride, sampleStride}`. `statusFields` names the values of a status record in order;
+/// `trailCapacity` is the largest (a scene's own is [`Playground::trail_capacity`]).
 ///
 /// # Errors
 /// Only if the JS engine refuses to build the object.

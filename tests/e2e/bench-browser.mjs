@@ -47,9 +47,9 @@ const DRAG_FRAME_BUDGET_MS = 50;
 /** Wall time played per crowd (ms). */
 const PLAY_MS = 4_000;
 /**
- * Crowds, the fraction of their run stepped before playing (trail history; 10,000 robots step
- * about 5 ms each, so that crowd starts early; 100 robots have all arrived by 40 % of their run,
- * where play would start again from t = 0), and the frame budget checked (ms).
+ * Crowds, the fraction of their run stepped before playing (trail history; the 10,000 robots'
+ * steps are the slowest, so that crowd starts early; 100 robots have all arrived by 40 % of
+ * their run, where play would start again from t = 0), and the frame budget checked (ms).
  */
 const CASES = [
   { robots: 100, ahead: 0.15, budgetMs: 16 },

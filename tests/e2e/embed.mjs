@@ -2,10 +2,12 @@
 // with its own simulation (one draws integral curves, the other plays a two-robot swap).
 // Checks that both draw, that they are independent (playing or dragging one leaves the other
 // alone), the element API (load, scenario, play, pause, reset, step, worldToScreen, change
-// event), and that nothing is logged to the console. Screenshots go to test-results/.
+// event), that the declarations' `Params` (www/dvf-playground.d.ts) are the core's parameter
+// table, and that nothing is logged to the console. Screenshots go to test-results/.
 //
 // Run: make test-e2e   (or: node tests/e2e/embed.mjs after make build-wasm)
 
+import { readFileSync } from 'node:fs';
 import {
   canvasStats,
   changedFraction,
@@ -16,8 +18,25 @@ import {
   RESULTS,
   run,
   scenarioOf,
+  WWW,
   waitLoaded,
 } from './lib.mjs';
+
+/** The TypeScript type of a parameter of each kind of the core's table (src/params.rs). */
+const TYPE_OF_KIND = { number: 'number', optional: 'number | null', mode: 'Avoidance' };
+
+/**
+ * The fields of interface `name` in declarations `text`: `[{key, type, doc}]`, each with the
+ * doc comment above it.
+ */
+function interfaceFields(text, name) {
+  const body = text.match(new RegExp(`export interface ${name} \\{([\\s\\S]*?)\\n\\}`))?.[1] ?? '';
+  return [...body.matchAll(/\/\*\*([\s\S]*?)\*\/\s*(\w+)\??: ([^;]+);/g)].map(([, doc, key, type]) => ({
+    key,
+    type: type.trim(),
+    doc,
+  }));
+}
 
 const VIEWPORT = { width: 1100, height: 900 };
 const FIELD = '#field';
@@ -150,5 +169,28 @@ await run(async ({ base, newPage }) => {
     `a moved instance keeps its time (${moved.t.toFixed(2)} s) and adds one robot per click with one change event`,
   );
   await page.screenshot({ path: join(RESULTS, 'embed-after-api.png'), fullPage: true });
+
+  // The declarations' Params are the core's table: the same keys, each of
+  // the type of its kind, its unit in its doc comment.
+  const table = await page.evaluate(() => import('./pkg/dvf.js').then((m) => m.parameters()));
+  const declared = interfaceFields(readFileSync(join(WWW, 'dvf-playground.d.ts'), 'utf8'), 'Params');
+  const byKey = new Map(declared.map((f) => [f.key, f]));
+  const wrong = table.rows
+    .filter((r) => {
+      const f = byKey.get(r.name);
+      return !f || f.type !== TYPE_OF_KIND[r.kind] || (r.unit && !f.doc.includes(`(${r.unit})`));
+    })
+    .map((r) => r.name);
+  check(
+    declared.length === table.rows.length && wrong.length === 0,
+    `www/dvf-playground.d.ts declares Params as the core's table of ${table.rows.length} parameters (${declared.length} declared; wrong or missing: ${wrong.join(', ') || 'none'})`,
+  );
+  const avoidance =
+    readFileSync(join(WWW, 'dvf-playground.d.ts'), 'utf8').match(/export type Avoidance =([^;]+);/)?.[1] ?? '';
+  const modes = [...avoidance.matchAll(/'(\w+)'/g)].map((m) => m[1]);
+  check(
+    [...modes].sort().join() === [...table.modes].sort().join(),
+    `the declared Avoidance modes are the core's (${modes.join(', ')})`,
+  );
   checkQuiet(page, 'embed page');
 });

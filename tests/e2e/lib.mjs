@@ -1,12 +1,13 @@
 // Shared by the end-to-end tests, the browser benchmark and the README's picture: a python3
 // http.server on www/ (the RELEASE wasm package that `make build-wasm` writes), Debian's
 // Chromium through playwright-core, a check list that fails the run, pixel statistics of a
-// playground's canvas, and the scenes and gestures that more than one of them drives.
+// playground's canvas, the scenes and gestures that more than one of them drives, and the
+// page's import graph.
 
 import { spawn } from 'node:child_process';
-import { existsSync, mkdirSync } from 'node:fs';
+import { existsSync, mkdirSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import { createServer } from 'node:net';
-import { dirname, join } from 'node:path';
+import { dirname, join, relative, resolve, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 
@@ -200,6 +201,46 @@ export function changedFraction(a, b) {
 }
 
 /** The preset of the README's picture, the drag and the prediction figures: the paper's Example 4. */
+/**
+ * The import cycles among the page's own modules under `dir` (www/ by default; the wasm
+ * bindings in pkg/ aside): each cycle as its files in order, relative to `dir`.
+ */
+export function importCycles(dir = WWW) {
+  const files = [];
+  const walk = (d) => {
+    for (const name of readdirSync(d)) {
+      const path = join(d, name);
+      if (name === 'pkg') continue;
+      if (statSync(path).isDirectory()) walk(path);
+      else if (name.endsWith('.js')) files.push(path);
+    }
+  };
+  walk(dir);
+  const imports = new Map(
+    files.map((f) => [
+      f,
+      [...readFileSync(f, 'utf8').matchAll(/^(?:import|export)\s[^;]*?from\s*'(\.[^']+)'/gm)]
+        .map((m) => resolve(dirname(f), m[1]))
+        .filter((p) => !p.includes(`${sep}pkg${sep}`)),
+    ]),
+  );
+  const cycles = [];
+  const state = new Map();
+  const stack = [];
+  const visit = (f) => {
+    state.set(f, 'open');
+    stack.push(f);
+    for (const g of imports.get(f) ?? []) {
+      if (state.get(g) === 'open') cycles.push([...stack.slice(stack.indexOf(g)), g].map((p) => relative(dir, p)));
+      else if (!state.has(g)) visit(g);
+    }
+    stack.pop();
+    state.set(f, 'done');
+  };
+  for (const f of files) if (!state.has(f)) visit(f);
+  return cycles;
+}
+
 export const EXAMPLE4 = 'example4-obstacle-formation';
 
 /**

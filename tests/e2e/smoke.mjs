@@ -1,20 +1,21 @@
 // End-to-end tests of the main page as users load it: the RELEASE wasm package in www/pkg
 // (`make build-wasm`), served by python3's http.server, driven in Debian's Chromium.
-// Checks: no console error or warning; every module preloaded; high-DPI canvas; dragging a
-// robot bends its predicted path (pixels and scenario); undo/redo; presets; parameters;
-// keyboard; the URL fragment round trip; bad fragments; scenario names as text; exports (JSON,
-// CSV, PNG) and import. Behaviour only: no time is compared with a limit (the figures and
+// Checks: the wasm module's compressed size; no import cycle among www/'s modules; no console
+// error or warning; every module preloaded; high-DPI canvas; dragging a robot bends its
+// predicted path (pixels and scenario); undo/redo; presets; parameters; keyboard; the URL
+// fragment round trip; bad fragments; scenario names as text; exports (JSON, CSV, PNG) and
+// import. Behaviour only: no time is compared with a limit (the figures and
 // their budgets are bench-browser.mjs's). Everything it writes goes to test-results/ (the
 // README's picture is picture.mjs's).
 //
-// Longer than the other files (about 550 lines): one session of the main page, its checks in
-// the order a person meets them, each building on the state the last one left (the drag that
-// undo takes back, the edits the copied link must reopen); the pages it opens beside it (bad
-// links, a hostile name, touch) are a few lines each.
+// One session of the main page, its checks in the order a person meets them, each building on
+// the state the last one left (the drag that undo takes back, the edits the copied link must
+// reopen); the pages it opens beside it (bad links, a hostile name, touch) are a few lines each.
 //
 // Run: make test-e2e   (or: node tests/e2e/smoke.mjs after make build-wasm)
 
-import { readFileSync, statSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
+import { constants, gzipSync } from 'node:zlib';
 import {
   canvasStats,
   changedFraction,
@@ -23,6 +24,7 @@ import {
   drag,
   EXAMPLE4,
   frames,
+  importCycles,
   join,
   predictions,
   RESULTS,
@@ -44,16 +46,32 @@ const MIN_COLOURED_PIXELS = 2_000;
 /** A real change of the picture touches at least this fraction of 8×8 blocks. */
 const MIN_CHANGED_FRACTION = 0.002;
 const PG = 'dvf-playground';
-/** The wasm package's budget before compression (bytes). */
-const MAX_WASM_BYTES = 250_000;
+/**
+ * The wasm module's budget as a reader downloads it: gzip at level 9 (bytes), what a server
+ * sends for `Content-Encoding: gzip`. Beside the simulator, the live model and the facade, the
+ * figure leaves room for the planners to come beside DVF and a QP solver for the safety filter,
+ * so that the module's size is a decision about this figure rather than a shape of the code.
+ */
+const MAX_WASM_GZIP_BYTES = 160_000;
+/** The gzip level the budget is measured at (zlib's best compression). */
+const WASM_GZIP_LEVEL = constants.Z_BEST_COMPRESSION;
 
 /** A locator inside the playground's shadow root (Playwright's CSS pierces open shadow roots). */
 const part = (page, id) => page.locator(`${PG} [data-id="${id}"]`);
 
 await run(async ({ base, newPage }) => {
-  const wasmBytes = statSync(join(ROOT, 'www', 'pkg', 'dvf_bg.wasm')).size;
-  console.log(`SIZE www/pkg/dvf_bg.wasm: ${wasmBytes} bytes`);
-  check(wasmBytes <= MAX_WASM_BYTES, `the release wasm package is at most ${MAX_WASM_BYTES} bytes (${wasmBytes})`);
+  const wasm = readFileSync(join(ROOT, 'www', 'pkg', 'dvf_bg.wasm'));
+  const gzipBytes = gzipSync(wasm, { level: WASM_GZIP_LEVEL }).length;
+  console.log(`SIZE www/pkg/dvf_bg.wasm: ${wasm.length} bytes, ${gzipBytes} bytes gzipped (level ${WASM_GZIP_LEVEL})`);
+  const cycles = importCycles();
+  check(
+    cycles.length === 0,
+    `www/'s modules import no cycle (${cycles.map((c) => c.join(' → ')).join('; ') || 'none'})`,
+  );
+  check(
+    gzipBytes <= MAX_WASM_GZIP_BYTES,
+    `the release wasm module gzipped at level ${WASM_GZIP_LEVEL} is at most ${MAX_WASM_GZIP_BYTES} bytes (${gzipBytes})`,
+  );
   const page = await newPage({ viewport: VIEWPORT, deviceScaleFactor: DEVICE_SCALE_FACTOR });
   await page.goto(`${base}/`);
   await waitLoaded(page);

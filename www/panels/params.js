@@ -7,54 +7,59 @@ import { humanize } from '../playground/message.js';
 import { el } from './dom.js';
 
 /**
- * The editable fields: key (in `params`, or `dt` and `duration` of the scenario), label, unit,
- * meaning, whether it may be empty (no saturation, no barrier).
- * @type {[key: string, label: string, unit: string, title: string, optional?: boolean][]}
+ * One row of the core's parameter table (`parameters()` of the wasm module, src/params.rs):
+ * the key in `params`, the page's symbol, unit, kind, range and meaning, and whether the panel
+ * shows it.
+ * @typedef {{name: string, symbol: string, unit: string, kind: 'number' | 'optional' | 'mode',
+ *   range: string, meaning: string, panel: boolean}} Parameter
  */
-export const PARAMETERS = [
-  ['k_v', 'k_v', '1/s', 'gain of the forward speed on the field'],
-  ['k_omega', 'k_ω', '1/s', 'gain of the attitude feedback −k_ω θ̃'],
-  ['k_a', 'k_a', '1/s', 'gain of the alignment term'],
-  ['transition_width', 'ε', 'm', 'width of the transition band ς'],
-  ['avoid_speed', 'v_c', 'm/s', 'speed while circling a virtual obstacle'],
-  ['avoid_radius', 'R_c', 'm', 'radius of the ring about a virtual obstacle'],
-  ['safe_radius', 'r_ij', 'm', 'safe radius: closer than 2·r_ij is a collision'],
-  ['sense_radius', 'R_s', 'm', 'sensing radius'],
-  ['v_max', 'v_max', 'm/s', 'speed saturation (empty: none)', true],
-  ['omega_max', 'ω_max', 'rad/s', 'turn-rate saturation (empty: none)', true],
-  [
-    'barrier_rate',
-    'α',
-    '1/s',
-    'safety barrier: a gap to a safe disc or an obstacle shrinks by at most α·dt per step (empty: off, the paper alone)',
-    true,
-  ],
-  ['tol_position', 'tol_p', 'm', 'a robot has converged within this distance of its goal'],
-  ['tol_heading', 'tol_θ', 'rad', 'a robot has converged within this heading error'],
-  ['dt', 'dt', 's', 'the step of the simulation'],
-  ['duration', 'T', 's', 'the duration of the run'],
+
+/** The run's own numbers, fields of the scenario rather than of its `params`, after them. */
+const RUN_FIELDS = [
+  { name: 'dt', symbol: 'dt', unit: 's', kind: 'number', meaning: 'the step of the simulation' },
+  { name: 'duration', symbol: 'T', unit: 's', kind: 'number', meaning: 'the duration of the run' },
 ];
 /** Fields of the scenario itself rather than of its `params`. */
-const SCENARIO_FIELDS = new Set(['dt', 'duration']);
-/** The avoidance modes, as in `params.avoidance`. */
-const AVOIDANCE_MODES = ['exit', 'paper'];
+const SCENARIO_FIELDS = new Set(RUN_FIELDS.map((f) => f.name));
 
 /** The parameter form of one playground. */
 export class ParamsPanel {
   /**
-   * Builds the form in `form`; `apply(key, value)` gets a number, `null` (an empty optional
-   * field) or the avoidance mode, and returns an error message or null.
+   * The form in `form`, built once the table is known (build); `apply(key, value)` gets a
+   * number, `null` (an empty optional field) or the avoidance mode, and returns an error
+   * message or null; `scenario()` is the scenario shown (the controller's model, read only),
+   * null before the first.
    * @param {HTMLFormElement} form
    * @param {(key: string, value: number | string | null) => string | null} apply
+   * @param {() => Record<string, any> | null} scenario
    */
-  constructor(form, apply) {
+  constructor(form, apply, scenario) {
     this.form = form;
+    this.apply = apply;
+    this.scenario = scenario;
     /** @type {Map<string, HTMLInputElement | HTMLSelectElement>} */
     this.inputs = new Map();
-    /** @type {Record<string, any> | null} the scenario last filled in */
-    this.scenario = null;
+    this.error = el('p', '', 'param-error');
+    this.error.setAttribute('role', 'alert');
+    this.error.hidden = true;
+    this.warning = el('p', '', 'param-warning');
+    this.warning.dataset.id = 'gain-warning';
+    this.warning.hidden = true;
+  }
+
+  /**
+   * Builds the form from the core's parameter table (`{rows, modes}`): a number field per
+   * number the panel shows, the run's dt and duration, and the avoidance menu.
+   * @param {{rows: Parameter[], modes: string[]}} table
+   */
+  build({ rows, modes }) {
+    const form = this.form;
+    const apply = this.apply;
     form.replaceChildren();
-    for (const [key, label, unit, title, optional] of PARAMETERS) {
+    this.inputs.clear();
+    const numbers = [...rows.filter((r) => r.panel && r.kind !== 'mode'), ...RUN_FIELDS];
+    for (const { name: key, symbol: label, unit, kind, meaning: title } of numbers) {
+      const optional = kind === 'optional';
       const row = el('label', undefined, 'param');
       row.title = title;
       const input = el('input');
@@ -80,26 +85,22 @@ export class ParamsPanel {
         this.result(input, label, apply(key, value));
       });
     }
-    const row = el('label', undefined, 'param wide');
-    row.title = "how robots avoid each other: the paper's ring, or the ring with an exit (default)";
-    const select = el('select');
-    select.name = 'avoidance';
-    select.setAttribute('aria-label', 'robot avoidance mode');
-    for (const mode of AVOIDANCE_MODES) {
-      const o = el('option', mode);
-      o.value = mode;
-      select.append(o);
+    for (const { name: key, symbol: label, meaning } of rows.filter((r) => r.panel && r.kind === 'mode')) {
+      const row = el('label', undefined, 'param wide');
+      row.title = meaning;
+      const select = el('select');
+      select.name = key;
+      select.setAttribute('aria-label', 'robot avoidance mode');
+      for (const mode of modes) {
+        const o = el('option', mode);
+        o.value = mode;
+        select.append(o);
+      }
+      select.addEventListener('change', () => this.result(select, label, apply(key, select.value)));
+      row.append(el('span', label, 'param-name'), select);
+      form.append(row);
+      this.inputs.set(key, select);
     }
-    select.addEventListener('change', () => this.result(select, 'avoidance', apply('avoidance', select.value)));
-    row.append(el('span', 'avoidance', 'param-name'), select);
-    form.append(row);
-    this.inputs.set('avoidance', select);
-    this.error = el('p', '', 'param-error');
-    this.error.setAttribute('role', 'alert');
-    this.error.hidden = true;
-    this.warning = el('p', '', 'param-warning');
-    this.warning.dataset.id = 'gain-warning';
-    this.warning.hidden = true;
     form.append(this.error, this.warning);
   }
 
@@ -147,15 +148,16 @@ export class ParamsPanel {
     for (const input of this.inputs.values()) input.removeAttribute('aria-invalid');
     this.error.textContent = '';
     this.error.hidden = true;
-    if (this.scenario) this.fill(this.scenario);
+    if (this.scenario()) this.fill();
   }
 
   /**
-   * Puts scenario `s`'s values into the form; not into `typing` (the field being typed in, if
+   * Puts the scenario's values into the form; not into `typing` (the field being typed in, if
    * any) unless it is null. A new value anywhere clears the marks of earlier refusals.
+   * @param {Element | null} [typing]
    */
-  fill(s, typing = null) {
-    this.scenario = s;
+  fill(typing = null) {
+    const s = this.scenario();
     for (const [key, input] of this.inputs) {
       if (input === typing) continue;
       const v = SCENARIO_FIELDS.has(key) ? s[key] : s.params[key];

@@ -5,7 +5,6 @@
 // worker, playground/results-worker.js) after each change; a change made meanwhile starts it
 // again. Runs larger than AUTO_ROBOT_STEPS wait for the Compute button.
 
-import { togglePin } from '../playground/ghost.js';
 import { messageOf } from '../playground/message.js';
 import { runWorker } from '../playground/wasm-views.js';
 import { el } from './dom.js';
@@ -34,10 +33,19 @@ function summary(report, safeRadius) {
 }
 
 export class ResultsPanel {
-  /** @param {import('../playground/controller.js').Controller} controller */
-  constructor(controller) {
-    this.c = controller;
-    this.box = controller.$('results');
+  /**
+   * @param {{
+   *   $: (id: string) => any,
+   *   active: () => boolean,
+   *   scenario: () => any,
+   *   pin: import('../playground/ghost.js').Pin,
+   *   showMessage: (text: string, options?: {info?: boolean}) => void,
+   * }} host the template's parts by `data-id`; whether the panel is shown (`controls`); the
+   *   scenario (the model itself, not a copy: read only); the pin; the message over the canvas
+   */
+  constructor(host) {
+    this.host = host;
+    this.box = host.$('results');
     /** @type {Worker | null} */
     this.worker = null;
     this.id = 0;
@@ -45,31 +53,31 @@ export class ResultsPanel {
     this.report = null;
     /** @type {ReturnType<typeof setTimeout> | null} */
     this.timer = null;
-    controller.$('copy-results').addEventListener('click', () => this.copy());
-    controller.$('pin').addEventListener('click', () => togglePin(controller));
+    host.$('copy-results').addEventListener('click', () => this.copy());
+    host.$('pin').addEventListener('click', () => host.pin.toggle());
   }
 
   /** The pinned run (playground/ghost.js): its figures above the current run's, and the Pin button. */
   showGhost() {
-    const c = this.c;
+    const c = this.host;
+    const { ghost, pending } = c.pin;
     const box = c.$('pinned');
-    const pin = c.$('pin');
-    pin.textContent = c.ghost ? 'Unpin' : c.pinning ? 'Pinning…' : 'Pin';
-    box.hidden = !c.ghost;
-    if (!c.ghost) return;
-    const lines = summary(c.ghost.report, null);
-    box.replaceChildren(el('p', `Pinned run (faded), ${c.ghost.name}:`, 'muted'), ...lines.map((t) => el('p', t)));
+    c.$('pin').textContent = ghost ? 'Unpin' : pending ? 'Pinning…' : 'Pin';
+    box.hidden = !ghost;
+    if (!ghost) return;
+    const lines = summary(ghost.report, null);
+    box.replaceChildren(el('p', `Pinned run (faded), ${ghost.name}:`, 'muted'), ...lines.map((t) => el('p', t)));
   }
 
   /** The scenario changed: its results are computed again (after SETTLE_MS). */
   stale() {
-    if (!this.c.host.hasAttribute('controls')) return;
+    if (!this.host.active()) return;
     this.report = null;
     delete this.box.dataset.ready;
-    this.c.$('copy-results').disabled = true;
+    this.host.$('copy-results').disabled = true;
     if (this.timer) clearTimeout(this.timer);
     this.stop();
-    const s = this.c.model;
+    const s = this.host.scenario();
     const steps = Math.round(s.duration / s.dt);
     if (s.robots.length * steps > AUTO_ROBOT_STEPS) {
       const button = el('button', 'Compute');
@@ -110,14 +118,14 @@ export class ResultsPanel {
       if (e.data.error) this.box.replaceChildren(el('p', `Could not run the scenario: ${messageOf(e.data)}`));
       else this.show(e.data.report);
     };
-    worker.postMessage({ id, scenario: this.c.scenario() });
+    worker.postMessage({ id, scenario: this.host.scenario() });
   }
 
   /** Shows `report` (the JSON of `dvf simulate`). */
   show(report) {
     this.report = report;
-    this.c.$('copy-results').disabled = false;
-    const lines = summary(report, this.c.model.params.safe_radius);
+    this.host.$('copy-results').disabled = false;
+    const lines = summary(report, this.host.scenario().params.safe_radius);
     const table = el('table', undefined, 'results-table');
     const head = el('tr');
     for (const h of ['robot', 'converged at (s)', 'position error (m)', 'heading error (rad)'])
@@ -147,9 +155,9 @@ export class ResultsPanel {
     if (!this.report) return;
     try {
       await navigator.clipboard.writeText(JSON.stringify(this.report));
-      this.c.showMessage('The results are on the clipboard as JSON.', { info: true });
+      this.host.showMessage('The results are on the clipboard as JSON.', { info: true });
     } catch (e) {
-      this.c.showMessage(`Could not copy the results: ${messageOf(e)}`);
+      this.host.showMessage(`Could not copy the results: ${messageOf(e)}`);
     }
   }
 }

@@ -29,12 +29,32 @@ const FIELDS = {
   ],
 };
 
+/**
+ * What the panel reads and how it edits: its form and title; the selection, the scenario (the
+ * controller's model, read only), robot `i`'s pose now, the time (s) and the focused element;
+ * one gesture of edits (Gestures.change); the controller's edit methods it calls; the text of
+ * the message a refused gesture showed.
+ * @typedef {{
+ *   form: HTMLElement,
+ *   title: HTMLElement,
+ *   selection: () => import('../playground/controller.js').Selection | null,
+ *   scenario: () => any,
+ *   pose: (i: number) => number[],
+ *   time: () => number,
+ *   focused: () => Element | null,
+ *   change: (kind: string, edits: () => void) => boolean,
+ *   edits: Pick<import('../playground/controller.js').Controller,
+ *     'edit' | 'moveRobot' | 'moveGoal' | 'moveObstacle' | 'resizeObstacle'>,
+ *   message: () => string,
+ * }} SelectionHost
+ */
+
 export class SelectionPanel {
-  /** @param {import('../playground/controller.js').Controller} controller */
-  constructor(controller) {
-    this.c = controller;
-    this.form = controller.$('selection');
-    this.title = controller.$('selection-title');
+  /** @param {SelectionHost} host */
+  constructor(host) {
+    this.host = host;
+    this.form = host.form;
+    this.title = host.title;
     this.key = '';
     /** @type {Map<string, HTMLInputElement>} */
     this.inputs = new Map();
@@ -43,37 +63,37 @@ export class SelectionPanel {
 
   /** The values shown for the selection now, by field key. */
   values() {
-    const c = this.c;
-    const sel = c.selection;
+    const { selection, scenario, pose } = this.host;
+    const sel = selection();
+    const s = scenario();
     if (!sel) {
-      const [xmin, ymin, xmax, ymax] = c.model.bounds;
+      const [xmin, ymin, xmax, ymax] = s.bounds;
       return { xmin, ymin, xmax, ymax };
     }
     if (sel.kind === 'robot') {
-      const [x, y, theta] = c.views.pose(sel.index);
+      const [x, y, theta] = pose(sel.index);
       return { x, y, theta };
     }
     if (sel.kind === 'goal') {
-      const [x, y, theta] = c.model.robots[sel.index].goal;
+      const [x, y, theta] = s.robots[sel.index].goal;
       return { x, y, theta };
     }
-    const o = c.model.obstacles[sel.index];
+    const o = s.obstacles[sel.index];
     return { x: o.center[0], y: o.center[1], radius: o.radius, influence: o.influence };
   }
 
   /** Shows the selection (each frame): the form is built when it changes, filled unless typed in. */
   update() {
-    const c = this.c;
-    const sel = c.selection;
+    const sel = this.host.selection();
     const kind = sel ? sel.kind : 'bounds';
     const key = sel ? `${kind}${sel.index}` : 'bounds';
     if (key !== this.key) this.build(kind, key);
-    const now = c.views.time > 0;
+    const now = this.host.time() > 0;
     this.title.textContent = sel
       ? `${kind === 'obstacle' ? 'Obstacle' : 'Robot'} ${sel.index + 1}${kind === 'goal' ? ': its goal' : kind === 'robot' ? (now ? ': where it is now' : ': its start') : ''}`
       : 'Scene bounds (select a robot, goal or obstacle to edit it)';
     const values = this.values();
-    const focused = c.root.activeElement;
+    const focused = this.host.focused();
     for (const [k, input] of this.inputs) {
       if (input === focused || input.getAttribute('aria-invalid') === 'true') continue;
       const text = String(Number(values[k].toPrecision(10)));
@@ -103,15 +123,15 @@ export class SelectionPanel {
 
   /** Applies the form to the selection (or the bounds) as one gesture. */
   apply(kind, changed) {
-    const c = this.c;
+    const { selection, scenario, change, edits: c, message } = this.host;
     const v = { ...this.values() };
     for (const [k, input] of this.inputs) {
       const n = Number(input.value);
       if (input.value.trim() !== '' && Number.isFinite(n)) v[k] = n;
     }
-    const sel = c.selection;
-    const ok = c.change(kind === 'bounds' ? 'params' : kind, () => {
-      if (kind === 'bounds') c.edit({ ...c.model, bounds: [v.xmin, v.ymin, v.xmax, v.ymax] });
+    const sel = selection();
+    const ok = change(kind === 'bounds' ? 'params' : kind, () => {
+      if (kind === 'bounds') c.edit({ ...scenario(), bounds: [v.xmin, v.ymin, v.xmax, v.ymax] });
       else if (kind === 'robot') c.moveRobot(sel.index, v.x, v.y, v.theta);
       else if (kind === 'goal') c.moveGoal(sel.index, v.x, v.y, v.theta);
       else {
@@ -123,7 +143,7 @@ export class SelectionPanel {
     this.error.hidden = ok;
     if (!ok) {
       changed.setAttribute('aria-invalid', 'true');
-      this.error.textContent = c.$('message-text').textContent;
+      this.error.textContent = message();
     }
   }
 }

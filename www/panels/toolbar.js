@@ -28,8 +28,19 @@ export function presetLabel({ name, summary }) {
   return words ? `${head}: ${words}` : head;
 }
 
+/**
+ * What the toolbar uses of the controller: the commands its buttons and menus give, and what
+ * it shows.
+ * @typedef {Pick<import('../playground/controller.js').Controller, '$' | 'canvas' | 'clock'
+ *   | 'exportJson' | 'fit' | 'gestures' | 'help' | 'history' | 'importScenario' | 'limits'
+ *   | 'loadPreset' | 'loop' | 'messages' | 'painter' | 'pg' | 'presetName' | 'recorder'
+ *   | 'scenario' | 'selection' | 'setDisplay' | 'showMessage' | 'theta0Deg'>
+ *   & import('../playground/actions.js').ActionsHost
+ *   & import('../playground/record.js').PictureHost} ToolbarHost
+ */
+
 export class Toolbar {
-  /** @param {import('../playground/controller.js').Controller} controller */
+  /** @param {ToolbarHost} controller */
   constructor(controller) {
     const c = controller;
     const $ = c.$;
@@ -51,9 +62,9 @@ export class Toolbar {
       if ($('preset').value !== CROWD_OPTION) c.canvas.focus({ preventScroll: true });
     });
     $('crowd-n').addEventListener('change', () => this.loadCrowd());
-    $('play').addEventListener('click', () => c.togglePlay());
-    $('step').addEventListener('click', () => c.stepTime());
-    $('reset').addEventListener('click', () => c.reset());
+    $('play').addEventListener('click', () => c.clock.togglePlay());
+    $('step').addEventListener('click', () => c.clock.stepTime());
+    $('reset').addEventListener('click', () => c.clock.reset());
     // The scrubber: any time of the run (a seek, frame by frame); the frame keeps it in step
     // with the clock unless it is held.
     const scrubber = $('scrubber');
@@ -67,37 +78,26 @@ export class Toolbar {
     scrubber.addEventListener('pointerup', release);
     scrubber.addEventListener('change', release);
     scrubber.addEventListener('input', () => {
-      if (c.pg) c.seekTo((Number(scrubber.value) / Number(scrubber.max)) * c.pg.duration);
+      if (c.pg) c.clock.seekTo((Number(scrubber.value) / Number(scrubber.max)) * c.pg.duration);
     });
     $('plots').addEventListener('pointerdown', (e) => {
       const t = c.painter.plots.timeAt(e.offsetX);
-      if (t != null) c.seekTo(t);
+      if (t != null) c.clock.seekTo(t);
     });
-    $('undo').addEventListener('click', () => c.undo());
-    $('redo').addEventListener('click', () => c.redo());
+    $('undo').addEventListener('click', () => c.gestures.undo());
+    $('redo').addEventListener('click', () => c.gestures.redo());
     $('add-robot').addEventListener('click', () => addRobotInView(c));
     $('add-obstacle').addEventListener('click', () => addObstacleInView(c));
     $('delete').addEventListener('click', () => deleteSelection(c));
     $('fit').addEventListener('click', () => c.fit());
-    $('help').addEventListener('click', () => c.toggleHelp());
-    $('help-close').addEventListener('click', () => c.toggleHelp(false));
-    $('field').addEventListener('change', () => {
-      c.fieldMode = $('field').value;
-      c.viewChanged();
-      c.requestDraw();
-    });
-    $('theta0').addEventListener('change', () => {
+    $('help').addEventListener('click', () => c.help.toggle());
+    // The display menus: a θ(0) that is not a number keeps the one shown (and its text).
+    const display = () => {
       const v = Number($('theta0').value);
-      if (Number.isFinite(v) && $('theta0').value.trim() !== '') c.theta0Deg = v;
-      else $('theta0').value = String(c.theta0Deg);
-      c.viewChanged();
-      c.requestDraw();
-    });
-    $('sensing').addEventListener('change', () => {
-      c.showSensing = $('sensing').checked;
-      c.viewChanged();
-      c.requestDraw();
-    });
+      const typed = Number.isFinite(v) && $('theta0').value.trim() !== '';
+      c.setDisplay({ field: $('field').value, theta0Deg: typed ? v : c.theta0Deg, sensing: $('sensing').checked });
+    };
+    for (const id of ['field', 'theta0', 'sensing']) $(id).addEventListener('change', display);
     $('export-json').addEventListener('click', () => c.exportJson());
     $('export-png').addEventListener('click', () => exportPng(c, Number($('png-scale').value)));
     $('export-svg').addEventListener('click', () => exportSvg(c));
@@ -138,16 +138,15 @@ export class Toolbar {
     const abort = new AbortController();
     const button = c.$('export-csv');
     button.disabled = true;
-    const text = c.$('message-text');
     c.showMessage('Writing the CSV: 0 %', { info: true, source: 'csv', actions: [['Cancel', () => abort.abort()]] });
     try {
       const pieces = await trajectoriesCsv(s, {
         signal: abort.signal,
         progress: (f) => {
-          if (c.messageSource === 'csv') text.textContent = `Writing the CSV: ${Math.floor(f * 100)} %`;
+          c.messages.update('csv', `Writing the CSV: ${Math.floor(f * 100)} %`);
         },
       });
-      c.clearMessage('csv');
+      c.messages.clear('csv');
       if (pieces) downloadCsv(pieces, s);
     } catch (e) {
       c.showMessage(`CSV: ${messageOf(e)}`);

@@ -12,7 +12,14 @@ const ADD_ROBOT_TRIES = 400;
 /** A new robot keeps this many safe radii from every robot and obstacle ring. */
 const ADD_ROBOT_GAP = 3;
 
-/** @typedef {import('./controller.js').Controller} Controller */
+/**
+ * What the actions use of the controller: its scenario, selection and view, its edit methods,
+ * one gesture, and the message.
+ * @typedef {Pick<import('./controller.js').Controller, 'addObstacle' | 'addRobot' | 'gestures'
+ *   | 'inspect' | 'model' | 'moveGoal' | 'moveObstacle' | 'moveRobot' | 'params' | 'pg'
+ *   | 'removeObstacle' | 'removeRobot' | 'select' | 'selection' | 'setParam' | 'showMessage'
+ *   | 'view' | 'views'>} ActionsHost
+ */
 
 /**
  * The first start/goal pair along a widening spiral about (x, y) that keeps clear of every
@@ -40,18 +47,21 @@ function freeSpot(s, x, y, span) {
   ];
 }
 
-/** Adds a robot, heading 0 to a goal heading 0, about the view's centre, and selects it. */
+/**
+ * Adds a robot, heading 0 to a goal heading 0, about the view's centre, and selects it.
+ * @param {ActionsHost} c
+ */
 export function addRobotInView(c) {
   const view = c.view();
   const span = Math.min(view.width, view.height) / view.scale;
   const [start, goal] = freeSpot(c.model, view.wx(view.width / 2), view.wy(view.height / 2), span);
   let index = 0;
-  const ok = c.change('add-robot', () => {
+  const ok = c.gestures.change('add-robot', () => {
     index = c.addRobot([start[0], start[1], 0], [goal[0], goal[1], 0]);
   });
   if (ok) {
-    c.selection = { kind: 'robot', index };
-    c.focusRobot = index;
+    c.select({ kind: 'robot', index });
+    c.inspect(index);
   }
 }
 
@@ -59,6 +69,7 @@ export function addRobotInView(c) {
  * The first centre along a widening spiral about (x, y) where an obstacle of influence radius
  * `ring` keeps its ring clear of every other obstacle's ring and its disc clear of every
  * robot's start, pose now and goal (`poses`, flat x, y, θ); without one, (x, y).
+ * @returns {[number, number]}
  */
 function freeObstacleSpot(s, poses, x, y, radius, ring) {
   const gap = s.params?.safe_radius ?? 1;
@@ -80,12 +91,15 @@ function freeObstacleSpot(s, poses, x, y, radius, ring) {
   return [x, y];
 }
 
-/** Adds an obstacle about the view's centre, clear of the others, sized to the view, and selects it. */
+/**
+ * Adds an obstacle about the view's centre, clear of the others, sized to the view, and selects it.
+ * @param {ActionsHost} c
+ */
 export function addObstacleInView(c) {
   const view = c.view();
   const r = (NEW_OBSTACLE_FRACTION * Math.min(view.width, view.height)) / view.scale;
   let index = 0;
-  const ok = c.change('add-obstacle', () => {
+  const ok = c.gestures.change('add-obstacle', () => {
     const center = freeObstacleSpot(
       c.model,
       c.views.poses,
@@ -96,39 +110,45 @@ export function addObstacleInView(c) {
     );
     index = c.addObstacle({ center, radius: r, influence: 2 * r });
   });
-  if (ok) c.selection = { kind: 'obstacle', index };
+  if (ok) c.select({ kind: 'obstacle', index });
 }
 
-/** Deletes the selected obstacle, or the selected robot (or the robot of the selected goal). */
+/**
+ * Deletes the selected obstacle, or the selected robot (or the robot of the selected goal).
+ * @param {ActionsHost} c
+ */
 export function deleteSelection(c) {
   const sel = c.selection;
   if (!sel) return;
-  const ok = c.change('delete', () => {
+  const ok = c.gestures.change('delete', () => {
     if (sel.kind === 'obstacle') c.removeObstacle(sel.index);
     else c.removeRobot(sel.index);
   });
   if (ok) {
-    c.selection = null;
-    c.focusRobot = 0;
+    c.select(null);
+    c.inspect(0);
   }
 }
 
-/** Moves the selection by (dx, dy) (m) and turns it by `dTheta` (rad). */
+/**
+ * Moves the selection by (dx, dy) (m) and turns it by `dTheta` (rad).
+ * @param {ActionsHost} c
+ */
 export function nudgeSelection(c, dx, dy, dTheta) {
   const sel = c.selection;
   const i = sel.index;
   if (sel.kind === 'robot') {
-    c.change('robot', () => {
+    c.gestures.change('robot', () => {
       const [x, y, theta] = c.views.pose(i);
       c.moveRobot(i, x + dx, y + dy, theta + dTheta);
     });
   } else if (sel.kind === 'goal') {
-    c.change('goal', () => {
+    c.gestures.change('goal', () => {
       const g = c.model.robots[i].goal;
       c.moveGoal(i, g[0] + dx, g[1] + dy, g[2] + dTheta);
     });
   } else if (sel.kind === 'obstacle') {
-    c.change('obstacle', () => {
+    c.gestures.change('obstacle', () => {
       const o = c.model.obstacles[i].center;
       c.moveObstacle(i, o[0] + dx, o[1] + dy);
     });
@@ -140,19 +160,19 @@ export function nudgeSelection(c, dx, dy, dTheta) {
  * `value` is a number, null (an empty optional field) or the avoidance mode. Returns the
  * core's message when it refuses the value (the scenario is kept; the panel keeps the typed
  * text), else null (the panel shows the scenario's values again).
- * @param {Controller} c
+ * @param {ActionsHost} c
  */
 export function changeParam(c, key, value) {
   if (!c.pg) return null;
-  c.begin();
+  c.gestures.begin();
   try {
     c.setParam(key, value);
   } catch (e) {
-    c.cancel();
+    c.gestures.cancel();
     return messageOf(e);
   }
   c.showMessage('');
-  c.commit('params');
-  c.params.fill(c.model);
+  c.gestures.commit('params');
+  c.params.fill();
   return null;
 }

@@ -70,37 +70,53 @@ export class Ghost {
 }
 
 /**
- * Pins the run of controller `c`'s scenario as its ghost (c.ghost), or unpins the one there.
- * @param {import('./controller.js').Controller} c
+ * The pin of one playground: the pinned run (`ghost`), or the worker making it (`pending`).
  */
-export function togglePin(c) {
-  if (c.ghost || c.pinning) {
-    c.pinning?.terminate();
-    c.pinning = null;
-    c.ghost = null;
-    c.results.showGhost();
-    c.requestDraw();
-    return;
+export class Pin {
+  /**
+   * @param {{
+   *   scenario: () => any,
+   *   showMessage: (text: string) => void,
+   *   changed: () => void,
+   * }} host the scenario to run, the message over the canvas, and what redraws the ghost
+   */
+  constructor(host) {
+    this.host = host;
+    /** @type {Ghost | null} the pinned run */
+    this.ghost = null;
+    /** @type {Worker | null} the worker making the run to pin */
+    this.pending = null;
   }
-  const s = c.scenario();
-  if (!s) return;
-  if (s.robots.length > GHOST_MAX_ROBOTS) {
-    c.showMessage(`Pin: runs of up to ${GHOST_MAX_ROBOTS} robots can be pinned, not ${s.robots.length}`);
-    return;
+
+  /** Pins the run of the scenario as it is, or unpins the one there. */
+  toggle() {
+    const host = this.host;
+    if (this.ghost || this.pending) {
+      this.pending?.terminate();
+      this.pending = null;
+      this.ghost = null;
+      host.changed();
+      return;
+    }
+    const s = host.scenario();
+    if (!s) return;
+    if (s.robots.length > GHOST_MAX_ROBOTS) {
+      host.showMessage(`Pin: runs of up to ${GHOST_MAX_ROBOTS} robots can be pinned, not ${s.robots.length}`);
+      return;
+    }
+    const worker = runWorker();
+    this.pending = worker;
+    host.changed();
+    worker.onmessage = (e) => {
+      worker.terminate();
+      if (this.pending !== worker) return;
+      this.pending = null;
+      if (e.data.error) host.showMessage(`Pin: ${messageOf(e.data)}`);
+      else this.ghost = new Ghost(e.data.report, e.data.trajectories, e.data.samples, s);
+      host.changed();
+    };
+    worker.postMessage({ id: 0, scenario: s, trajectories: true });
   }
-  const worker = runWorker();
-  c.pinning = worker;
-  c.results.showGhost();
-  worker.onmessage = (e) => {
-    worker.terminate();
-    if (c.pinning !== worker) return;
-    c.pinning = null;
-    if (e.data.error) c.showMessage(`Pin: ${messageOf(e.data)}`);
-    else c.ghost = new Ghost(e.data.report, e.data.trajectories, e.data.samples, s);
-    c.results.showGhost();
-    c.requestDraw();
-  };
-  worker.postMessage({ id: 0, scenario: s, trajectories: true });
 }
 
 /** Draws `ghost`'s paths faded on `ctx` through `view` (render/camera.js). */

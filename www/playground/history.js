@@ -1,6 +1,6 @@
 // Undo and redo of the scenario (the document): starts, goals, obstacles, parameters, robots
 // and obstacles added or deleted, presets and imports. An entry is the scenario's JSON text
-// as it was before a gesture (a drag, a key, a button: see playground/controller.js), kept
+// as it was before a gesture (a drag, a key, a button: see playground/gestures.js), kept
 // when the gesture's first edit comes; moving a robot at t > 0 nudges the running simulation
 // and is no entry.
 

@@ -18,8 +18,13 @@ const HANDLE_HIT_PX = HANDLE_RADIUS_PX + 4;
  */
 
 /**
+ * What hit testing reads of the controller.
+ * @typedef {Pick<import('./controller.js').Controller, 'model' | 'selection' | 'view' | 'views'>} HitHost
+ */
+
+/**
  * The target at canvas point (px, py) of controller `c` (CSS px).
- * @param {import('./controller.js').Controller} c
+ * @param {HitHost} c
  * @returns {Target}
  */
 export function hitTest(c, px, py) {

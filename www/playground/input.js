@@ -18,8 +18,19 @@ const VIEW_KEYS = [' ', 's', 'S', 'r', 'R', 'f', 'F', '+', '=', '-', '_', '?'];
 /** Zoom factor per wheel notch or +/- key. */
 const ZOOM_STEP = 1.2;
 
+/**
+ * What input uses of the controller: the canvas and its view, the selection, the edit
+ * methods, the gestures, the clock, the help and the messages.
+ * @typedef {Pick<import('./controller.js').Controller, 'camera' | 'canvas' | 'clock' | 'editable'
+ *   | 'fit' | 'gestures' | 'help' | 'host' | 'inspect' | 'messages' | 'model' | 'moveGoal'
+ *   | 'moveObstacle' | 'moveRobot' | 'pg' | 'readonly' | 'requestDraw' | 'resizeObstacle' | 'root'
+ *   | 'select' | 'selection' | 'showMessage' | 'toolbar' | 'view' | 'viewChanged' | 'views'
+ *   | 'zoom'>
+ *   & import('./actions.js').ActionsHost & import('./hit.js').HitHost} InputHost
+ */
+
 export class Input {
-  /** @param {import('./controller.js').Controller} controller */
+  /** @param {InputHost} controller */
   constructor(controller) {
     this.c = controller;
     /** The drag in progress: its target (hit.js), pointer, grip offset (m) and last point. */
@@ -68,8 +79,8 @@ export class Input {
     const target = hitTest(c, px, py);
     let anchor = [0, 0];
     if (target.kind === 'robot' || target.kind === 'goal' || target.kind === 'obstacle') {
-      c.selection = { kind: target.kind, index: target.index };
-      if (target.kind !== 'obstacle') c.focusRobot = target.index;
+      c.select({ kind: target.kind, index: target.index });
+      if (target.kind !== 'obstacle') c.inspect(target.index);
       if (target.kind === 'robot') anchor = c.views.pose(target.index);
       if (target.kind === 'goal') anchor = c.model.robots[target.index].goal;
       if (target.kind === 'obstacle') anchor = c.model.obstacles[target.index].center;
@@ -82,7 +93,7 @@ export class Input {
       last: { px, py },
       moved: false,
     };
-    if (target.kind !== 'pan') c.begin();
+    if (target.kind !== 'pan') c.gestures.begin();
     c.canvas.setPointerCapture(e.pointerId);
     c.toolbar.update();
     c.requestDraw();
@@ -118,10 +129,10 @@ export class Input {
     this.drag = null;
     if (c.canvas.hasPointerCapture(e.pointerId)) c.canvas.releasePointerCapture(e.pointerId);
     if (d.kind !== 'pan') {
-      if (d.moved) c.commit(d.kind);
-      else c.cancel();
+      if (d.moved) c.gestures.commit(d.kind);
+      else c.gestures.cancel();
     }
-    c.clearMessage('drag');
+    c.messages.clear('drag');
     c.viewChanged();
     c.requestDraw();
   }
@@ -132,7 +143,7 @@ export class Input {
     if (!d) return;
     this.drag = null;
     this.pendingPointer = null;
-    if (d.kind !== 'pan') this.c.cancel();
+    if (d.kind !== 'pan') this.c.gestures.cancel();
   }
 
   /** Applies the drag's newest pointer position, if it moved since the last frame. */
@@ -183,7 +194,7 @@ export class Input {
         const o = c.model.obstacles[i];
         c.resizeObstacle(i, o.radius, Math.max(Math.hypot(wx - o.center[0], wy - o.center[1]), o.radius * 1.01));
       }
-      c.clearMessage('drag');
+      c.messages.clear('drag');
     } catch (e) {
       // Over the canvas, so the view does not move; gone once the drag ends (the scene keeps
       // its last valid position).
@@ -220,17 +231,17 @@ export class Input {
     const mod = e.ctrlKey || e.metaKey;
     const key = e.key;
     // A figure that is not an editor takes the clock's, the view's and the help's keys only.
-    if (!c.editable && !VIEW_KEYS.includes(key) && !(key === 'Escape' && c.helpShown())) return;
+    if (!c.editable && !VIEW_KEYS.includes(key) && !(key === 'Escape' && c.help.shown)) return;
     const centre = () => [c.canvas.clientWidth / 2, c.canvas.clientHeight / 2];
     let handled = true;
     if (mod && (key === 'z' || key === 'Z')) {
-      if (e.shiftKey) c.redo();
-      else c.undo();
-    } else if (mod && key === 'y') c.redo();
+      if (e.shiftKey) c.gestures.redo();
+      else c.gestures.undo();
+    } else if (mod && key === 'y') c.gestures.redo();
     else if (mod) handled = false;
-    else if (key === ' ') c.togglePlay();
-    else if (key === 's' || key === 'S') c.stepTime();
-    else if (key === 'r' || key === 'R') c.reset();
+    else if (key === ' ') c.clock.togglePlay();
+    else if (key === 's' || key === 'S') c.clock.stepTime();
+    else if (key === 'r' || key === 'R') c.clock.reset();
     else if (key === 'a' || key === 'A') addRobotInView(c);
     else if (key === 'o' || key === 'O') addObstacleInView(c);
     else if (key === 'Delete' || key === 'Backspace') deleteSelection(c);
@@ -239,9 +250,9 @@ export class Input {
     else if (key === '-' || key === '_') c.zoom(1 / ZOOM_STEP, ...centre());
     else if (key === '[' || key === ']') this.cycleSelection(key === ']' ? 1 : -1);
     else if (key === 'g' || key === 'G') this.toggleGoalSelection();
-    else if (key === '?') c.toggleHelp();
-    else if (key === 'Escape' && c.helpShown()) c.toggleHelp(false);
-    else if (key === 'Escape') c.selection = null;
+    else if (key === '?') c.help.toggle();
+    else if (key === 'Escape' && c.help.shown) c.help.toggle(false);
+    else if (key === 'Escape') c.select(null);
     else if (key.startsWith('Arrow') && c.selection) {
       const view = c.view();
       const stepM = (KEY_MOVE_FRACTION * Math.min(view.width, view.height)) / view.scale;
@@ -266,8 +277,8 @@ export class Input {
     const c = this.c;
     const n = c.model.robots.length;
     const i = c.selection && c.selection.kind !== 'obstacle' ? (c.selection.index + dir + n) % n : 0;
-    c.selection = { kind: 'robot', index: i };
-    c.focusRobot = i;
+    c.select({ kind: 'robot', index: i });
+    c.inspect(i);
   }
 
   /** Switches the selection between a robot and its goal. */
@@ -275,6 +286,6 @@ export class Input {
     const c = this.c;
     const sel = c.selection;
     if (!sel || sel.kind === 'obstacle') return;
-    c.selection = { kind: sel.kind === 'robot' ? 'goal' : 'robot', index: sel.index };
+    c.select({ kind: sel.kind === 'robot' ? 'goal' : 'robot', index: sel.index });
   }
 }

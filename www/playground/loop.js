@@ -19,10 +19,28 @@ const STEP_BUDGET_MS = 20;
 /** Frame work times kept for the benchmark (a ring; see `stats`). */
 const WORK_SAMPLES = 600;
 
+/**
+ * What the frame loop reads and calls: the simulation; whether the element is in a document;
+ * the frame's work (the pending drag, the drawing); the clock (clock.js) it plays; whether to
+ * start over at the end; what to tell once the clock stops or a seek ends; the canvases it
+ * rasterises for the benchmark.
+ * @typedef {{
+ *   sim: () => import('../pkg/dvf.js').Playground | null,
+ *   connected: () => boolean,
+ *   applyInput: () => void,
+ *   draw: () => void,
+ *   clock: () => import('./clock.js').Clock,
+ *   looping: () => boolean,
+ *   time: () => number,
+ *   settled: () => void,
+ *   canvases: () => HTMLCanvasElement[],
+ * }} LoopHost
+ */
+
 export class FrameLoop {
-  /** @param {import('./controller.js').Controller} controller */
-  constructor(controller) {
-    this.c = controller;
+  /** @param {LoopHost} host */
+  constructor(host) {
+    this.host = host;
     this.playing = false;
     this.speed = DEFAULT_SPEED;
     /** @type {number | null} the time of the last playing frame (ms) */
@@ -73,11 +91,11 @@ export class FrameLoop {
    * edits made at t > 0 are nudges of that run only: a seek replays the scenario.
    */
   seekTo(t) {
-    const c = this.c;
+    const pg = this.host.sim();
     this.playing = false;
     this.convergedAt = null;
-    const target = Math.max(0, Math.min(Math.round(c.pg.duration / c.pg.dt), Math.round(t / c.pg.dt)));
-    if (target < Math.round(c.pg.time / c.pg.dt)) c.rewind();
+    const target = Math.max(0, Math.min(Math.round(pg.duration / pg.dt), Math.round(t / pg.dt)));
+    if (target < Math.round(pg.time / pg.dt)) this.host.clock().rewind();
     this.seekStep = target;
     this.requestDraw();
   }
@@ -96,21 +114,21 @@ export class FrameLoop {
 
   /** Asks for a frame (one at a time, and none while the element is out of the document). */
   requestDraw() {
-    if (this.frameRequested || !this.c.connected) return;
+    if (this.frameRequested || !this.host.connected()) return;
     this.frameRequested = true;
     requestAnimationFrame((ms) => this.frame(ms));
   }
 
   frame(nowMs) {
-    const c = this.c;
+    const host = this.host;
     // What the frame's own work asks for (an edit of the drag it applies) is drawn by it.
     try {
-      if (!c.pg) return;
+      if (!host.sim()) return;
       const workStart = performance.now();
-      c.input.applyPending();
+      host.applyInput();
       if (this.seekStep != null) this.seek();
       if (this.playing) this.advance(nowMs);
-      c.painter.draw();
+      host.draw();
       if (this.stats.rasterInWork) this.rasterNow();
       const st = this.stats;
       if (st.frames === 0) st.firstFrameMs = performance.now();
@@ -127,21 +145,20 @@ export class FrameLoop {
 
   /** One frame's slice of a seek (seekTo). */
   seek() {
-    const c = this.c;
-    const left = this.seekStep - Math.round(c.pg.time / c.pg.dt);
+    const pg = this.host.sim();
+    const left = this.seekStep - Math.round(pg.time / pg.dt);
     const fit = this.stepMs == null ? 50 : Math.max(1, Math.floor(STEP_BUDGET_MS / this.stepMs));
     if (left > 0) this.timedAdvance(Math.min(left, fit));
-    if (left <= Math.min(left, fit) || c.pg.finished) {
+    if (left <= Math.min(left, fit) || pg.finished) {
       this.seekStep = null;
-      c.toolbar.update();
-      c.viewChanged();
+      this.host.settled();
     }
   }
 
   /** Steps `n` for the clock, keeping the mean cost of a step for the budget. */
   timedAdvance(n) {
     const t0 = performance.now();
-    const taken = this.c.advance(n);
+    const taken = this.host.clock().advance(n);
     if (taken > 0) {
       const per = (performance.now() - t0) / taken;
       this.stepMs = this.stepMs == null ? per : 0.8 * this.stepMs + 0.2 * per;
@@ -150,10 +167,12 @@ export class FrameLoop {
 
   /** Steps the simulation for a playing frame at `nowMs`. */
   advance(nowMs) {
-    const c = this.c;
+    const host = this.host;
+    const pg = host.sim();
+    const clock = host.clock();
     const wall = this.lastFrameMs == null ? 0 : Math.min(MAX_FRAME_WALL_S, (nowMs - this.lastFrameMs) / 1000);
     this.lastFrameMs = nowMs;
-    this.stepCarry += (wall * this.speed) / c.pg.dt;
+    this.stepCarry += (wall * this.speed) / pg.dt;
     let n = Math.floor(this.stepCarry);
     this.stepCarry -= n;
     // The step budget: what does not fit is dropped, and the clock shows the slower rate.
@@ -167,17 +186,16 @@ export class FrameLoop {
     }
     if (n > 0) this.timedAdvance(n);
     // The run ends at t = duration, or once every robot is at its goal within the tolerances
-    // (which the page hears as `finished` too; at t = duration, Controller.advance sent it).
-    const converged = !c.pg.finished && c.allConverged();
-    if (converged) c.finished();
-    if (c.pg.finished || converged) {
+    // (which the page hears as `finished` too; at t = duration, Clock.advance sent it).
+    const converged = !pg.finished && clock.allConverged();
+    if (converged) clock.finished();
+    if (pg.finished || converged) {
       // `loop`: start over (the clock keeps playing from t = 0).
-      if (c.looping) c.reset();
+      if (host.looping()) clock.reset();
       else {
         this.playing = false;
-        if (converged) this.convergedAt = c.views.time;
-        c.toolbar.update();
-        c.viewChanged();
+        if (converged) this.convergedAt = host.time();
+        host.settled();
       }
     }
   }
@@ -194,7 +212,6 @@ export class FrameLoop {
       this.rasterSink.height = 1;
     }
     const sink = this.rasterSink.getContext('2d');
-    sink.drawImage(this.c.canvas, 0, 0, 1, 1);
-    sink.drawImage(this.c.$('plots'), 0, 0, 1, 1);
+    for (const canvas of this.host.canvases()) sink.drawImage(canvas, 0, 0, 1, 1);
   }
 }

@@ -9,7 +9,7 @@ import { drawScene } from '../render/scene.js';
 import { drawGhost } from './ghost.js';
 import { SpriteLayer } from '../render/sprites.js';
 import { SvgContext } from '../render/svg.js';
-import { FIELD_SPACING_PX, setPalette } from '../render/theme.js';
+import { FIELD_SPACING_PX, readPalette, setPalette } from '../render/theme.js';
 import { TRAIL_SETTLE_MS, TrailLayer } from '../render/trails.js';
 import { messageOf } from './message.js';
 
@@ -39,13 +39,24 @@ function clockText(scene) {
   return `t = ${scene.time.toFixed(2)} s / ${scene.duration.toFixed(2)} s`;
 }
 
+/**
+ * What the painter reads of the controller: the state a frame shows, and the parts whose
+ * per-frame text it updates.
+ * @typedef {Pick<import('./controller.js').Controller, '$' | 'canvas' | 'fieldMode' | 'focusRobot'
+ *   | 'generation' | 'host' | 'input' | 'limits' | 'loop' | 'model' | 'pg' | 'pin'
+ *   | 'recorder' | 'requestDraw' | 'selection' | 'selectionPanel' | 'showMessage'
+ *   | 'showSensing' | 'theta0Deg' | 'toolbar' | 'view' | 'views'>} PaintHost
+ */
+
 export class Painter {
-  /** @param {import('./controller.js').Controller} controller */
+  /** @param {PaintHost} controller */
   constructor(controller) {
     this.c = controller;
     this.trailLayer = new TrailLayer();
     this.spriteLayer = new SpriteLayer();
     this.plots = new PlotsPanel(controller.$('plots'));
+    /** The scene's colours from the stylesheet (render/theme.js), read by readTheme. */
+    this.palette = readPalette(controller.$('canvas').closest('.pg'));
     /** The integral curves drawn, and what they were computed for. */
     this.curves = null;
     this.curvesKey = '';
@@ -58,10 +69,18 @@ export class Painter {
     this.curvesKey = '';
   }
 
-  /** New colours: the crowd's sprites and the trails are drawn anew. */
-  newTheme() {
+  /**
+   * Reads the colours of `node` (the element's `.pg`) in the `dark` theme or the light one:
+   * the painters', the plots', and the crowd's sprites drawn anew (the controller redraws the
+   * trails).
+   */
+  readTheme(node, dark) {
+    node.classList.toggle('dark', dark);
+    this.palette = readPalette(node);
+    setPalette(this.palette);
+    const p = this.palette;
+    this.plots.colours = { text: p.plotText, axis: p.plotAxis, pair: p.plotPair };
     this.spriteLayer = new SpriteLayer();
-    this.c.generation += 1;
   }
 
   /**
@@ -72,7 +91,7 @@ export class Painter {
   draw(target = null) {
     const c = this.c;
     // The module's colours are shared by every playground of the page: this one's, now.
-    setPalette(c.palette);
+    setPalette(this.palette);
     const { ctx, width, height } = target
       ? fitCanvas(target.canvas, target.dpr, [c.canvas.clientWidth, c.canvas.clientHeight])
       : fitCanvas(c.canvas);
@@ -86,7 +105,7 @@ export class Painter {
         c.requestDraw();
       }, TRAIL_SETTLE_MS);
     }
-    drawScene(ctx, view, scene, c.ghost ? () => drawGhost(ctx, view, c.ghost) : null);
+    drawScene(ctx, view, scene, c.pin.ghost ? () => drawGhost(ctx, view, c.pin.ghost) : null);
     const loop = c.loop;
     const slowed =
       loop.playing && loop.rate < loop.speed * 0.995
@@ -108,7 +127,7 @@ export class Painter {
     // Free text from the scenario: textContent only, never HTML.
     c.$('title').textContent = c.model.name;
     if (c.host.hasAttribute('controls')) {
-      this.plots.draw(scene, c.focusRobot, c.ghost);
+      this.plots.draw(scene, c.focusRobot, c.pin.ghost);
       showInspected(c.$('robot-info'), c.focusRobot, c.model.robots.length, scene.status);
       c.selectionPanel.update();
     }
@@ -145,14 +164,14 @@ export class Painter {
    */
   svg() {
     const c = this.c;
-    setPalette(c.palette);
+    setPalette(this.palette);
     const width = c.canvas.clientWidth;
     const height = c.canvas.clientHeight;
     const ctx = new SvgContext(width, height);
     const view = c.view();
     const scene = { ...this.scene(view, width, height, 1), vector: true };
     const g = /** @type {any} */ (ctx);
-    drawScene(g, view, scene, c.ghost ? () => drawGhost(g, view, c.ghost) : null);
+    drawScene(g, view, scene, c.pin.ghost ? () => drawGhost(g, view, c.pin.ghost) : null);
     stamp(g, c.model.name, clockText(scene));
     return ctx.toString();
   }

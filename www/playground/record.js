@@ -13,7 +13,15 @@ const RECORD_SLICE_MS = 500;
 /** The containers tried, best first. */
 const WEBM_TYPES = ['video/webm;codecs=vp9', 'video/webm;codecs=vp8', 'video/webm'];
 
-/** Draws the picture of controller `c` at `scale` times the CSS size and offers it as a PNG. */
+/**
+ * What the picture exports use of the controller.
+ * @typedef {Pick<import('./controller.js').Controller, 'model' | 'painter' | 'requestDraw' | 'showMessage'>} PictureHost
+ */
+
+/**
+ * Draws the picture of controller `c` at `scale` times the CSS size and offers it as a PNG.
+ * @param {PictureHost} c
+ */
 export function exportPng(c, scale) {
   const canvas = document.createElement('canvas');
   c.painter.draw({ canvas, dpr: scale });
@@ -24,7 +32,10 @@ export function exportPng(c, scale) {
   c.requestDraw();
 }
 
-/** Offers the picture of controller `c` as an SVG file (Painter.svg: the canvas as vectors). */
+/**
+ * Offers the picture of controller `c` as an SVG file (Painter.svg: the canvas as vectors).
+ * @param {PictureHost} c
+ */
 export function exportSvg(c) {
   let text = '';
   try {
@@ -38,9 +49,18 @@ export function exportSvg(c) {
 
 /** A WebM recording of one playground's canvas. */
 export class Recorder {
-  /** @param {import('./controller.js').Controller} controller */
-  constructor(controller) {
-    this.c = controller;
+  /**
+   * @param {{
+   *   canvas: HTMLCanvasElement,
+   *   name: () => string,
+   *   messages: import('./message-box.js').MessageBox,
+   *   shown: () => void,
+   *   requestDraw: () => void,
+   * }} host the canvas recorded; the scenario's name, for the file; the message box the
+   *   progress shows in; what updates the toolbar; what asks for a frame
+   */
+  constructor(host) {
+    this.host = host;
     /** @type {MediaRecorder | null} */
     this.recorder = null;
     /** @type {Blob[]} */
@@ -60,14 +80,14 @@ export class Recorder {
   }
 
   start() {
-    const c = this.c;
+    const { canvas, messages, shown, requestDraw } = this.host;
     const type = typeof MediaRecorder === 'undefined' ? null : WEBM_TYPES.find((t) => MediaRecorder.isTypeSupported(t));
     if (!type) {
-      c.showMessage('Record: this browser cannot record a canvas as WebM (MediaRecorder)');
+      messages.show('Record: this browser cannot record a canvas as WebM (MediaRecorder)');
       return;
     }
     try {
-      const stream = c.canvas.captureStream(RECORD_FPS);
+      const stream = canvas.captureStream(RECORD_FPS);
       const recorder = new MediaRecorder(stream, { mimeType: type });
       this.chunks = [];
       this.bytes = 0;
@@ -83,35 +103,34 @@ export class Recorder {
       this.recorder = recorder;
       this.startedMs = performance.now();
     } catch (e) {
-      c.showMessage(`Record: ${messageOf(e)}`);
+      messages.show(`Record: ${messageOf(e)}`);
       return;
     }
-    c.showMessage('Recording: 0.0 s', { info: true, source: 'record', actions: [['Stop', () => this.stop()]] });
-    c.toolbar.update();
-    c.requestDraw();
+    messages.show('Recording: 0.0 s', { info: true, source: 'record', actions: [['Stop', () => this.stop()]] });
+    shown();
+    requestDraw();
   }
 
   stop() {
     if (!this.recorder) return;
     this.recorder.stop();
     this.recorder = null;
-    this.c.toolbar.update();
+    this.host.shown();
   }
 
   /** The recording's length and size, over the canvas. */
   progress() {
-    const c = this.c;
-    if (c.messageSource !== 'record' || !this.recorder) return;
+    if (!this.recorder) return;
     const s = (performance.now() - this.startedMs) / 1000;
-    c.$('message-text').textContent = `Recording: ${s.toFixed(1)} s, ${(this.bytes / 1e6).toFixed(1)} MB`;
+    this.host.messages.update('record', `Recording: ${s.toFixed(1)} s, ${(this.bytes / 1e6).toFixed(1)} MB`);
   }
 
   finish(type) {
-    const c = this.c;
-    c.clearMessage('record');
+    const { name, messages, requestDraw } = this.host;
+    messages.clear('record');
     const blob = new Blob(this.chunks, { type: type.split(';')[0] });
     this.chunks = [];
-    downloadBlob(blob, `${fileStem(c.model.name)}.webm`);
-    c.requestDraw();
+    downloadBlob(blob, `${fileStem(name())}.webm`);
+    requestDraw();
   }
 }

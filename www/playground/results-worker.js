@@ -1,13 +1,11 @@
 // A module worker that runs a scenario to its end off the page's thread (`Run`: the run that
 // `dvf simulate` makes) and posts its report, the figures of the results panel
 // (panels/results.js), and with `trajectories` its trajectories too (a pinned run,
-// ghost.js); it also writes a large scenario's JSON file off the page's thread (io.js).
-// Messages in: first {wasm}, where the page loads the module from (its URL or its bytes:
-// wasm-views.js, runWorker), then {id, scenario, trajectories?} or {id, json: scenario}; out:
-// {id, report, trajectories?, samples?}, {id, text} or {id, error}. The module is loaded on
-// the first run only.
+// ghost.js). Messages in: first {wasm}, where the page loads the module from (its URL or its
+// bytes: wasm-views.js, runWorker), then {id, scenario, trajectories?}; out:
+// {id, report, trajectories?, samples?} or {id, error}. The module is loaded on the first run
+// only.
 
-import { exactJson } from '../exact-json.js';
 import init, { Run } from '../pkg/dvf.js';
 
 /** Where the module comes from (the first message), and the module once a run asks for it. */
@@ -22,10 +20,6 @@ self.onmessage = async (e) => {
   }
   const { id, scenario } = e.data;
   try {
-    if ('json' in e.data) {
-      self.postMessage({ id, text: `${exactJson(e.data.json, 2)}\n` });
-      return;
-    }
     if (source === null) throw new Error('no wasm module was given to the worker');
     ready ??= init({ module_or_path: source });
     await ready;

@@ -3,7 +3,8 @@
 // addresses (pointers) of the simulation's arrays and knows their layouts (strides): every
 // other module indexes arrays with the strides exported here.
 
-import init, { defaultPreset, playgroundLimits, presets } from '../pkg/dvf.js';
+import init, { defaultPreset, parameters, playgroundLimits, presets } from '../pkg/dvf.js';
+import { messageOf, useParameters } from './message.js';
 
 // The records of the flat arrays come from the module (`playgroundLimits()`, src/wasm/mod.rs),
 // set once it is initialised: ES module bindings are live, so every importer sees them. Nothing
@@ -47,7 +48,10 @@ const defaultWasmUrl = () => new URL('../pkg/dvf_bg.wasm', import.meta.url);
  * @type {string | URL | BufferSource | undefined}
  */
 let wasmSource;
-/** @type {Promise<{memory: WebAssembly.Memory, limits: Limits, presets: PresetInfo[], defaultPreset: string}> | null} */
+/**
+ * @type {Promise<{memory: WebAssembly.Memory, limits: Limits, presets: PresetInfo[], defaultPreset: string,
+ *   parameters: {rows: import('../panels/params.js').Parameter[], modes: string[]}}> | null}
+ */
 let ready = null;
 
 /**
@@ -88,7 +92,7 @@ export function runWorker() {
 /**
  * The module, initialised once per page on first call (never at import: a page, or a server
  * rendering one, that imports the element loads nothing until an element asks): its memory,
- * limits, presets and default preset.
+ * limits, presets, default preset and parameter table (which the messages take their names from).
  */
 export function wasmReady() {
   ready ??= init({ module_or_path: wasmSourceNow() }).then((wasm) => {
@@ -102,7 +106,9 @@ export function wasmReady() {
     limits.statusFields.forEach((name, offset) => {
       STATUS[name] = offset;
     });
-    return { memory: wasm.memory, limits, presets: presets(), defaultPreset: defaultPreset() };
+    const table = parameters();
+    useParameters(table.rows);
+    return { memory: wasm.memory, limits, presets: presets(), defaultPreset: defaultPreset(), parameters: table };
   });
   return ready;
 }
@@ -274,4 +280,31 @@ export class LiveViews {
     this.byName.set(name, made);
     return made;
   }
+}
+
+/**
+ * Whether this engine runs WebAssembly's 128-bit SIMD, which the simulator's module is built
+ * with: a module of one function that splats a constant into a vector and counts its bits (the
+ * test the npm package wasm-feature-detect makes).
+ */
+function hasWasmSimd() {
+  const probe = [
+    0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11,
+  ];
+  try {
+    return WebAssembly.validate(new Uint8Array(probe));
+  } catch {
+    return false;
+  }
+}
+
+/** The message for a module that could not be loaded, with what to do about it. */
+export function wasmFailure(e) {
+  if (typeof WebAssembly === 'object' && !hasWasmSimd()) {
+    return 'This browser cannot run the simulator: it needs WebAssembly with 128-bit SIMD (Chrome or Edge 91, Firefox 89, Safari 16.4 or later).';
+  }
+  if (globalThis.location?.protocol === 'file:') {
+    return 'This page was opened from a file (file://), and browsers load the simulator (WebAssembly) only over HTTP. Serve the folder over HTTP, e.g. run "python3 -m http.server" in it and open http://localhost:8000/.';
+  }
+  return `Could not load the simulator (${wasmSourceName()}): ${messageOf(e)}. Serve dvf_bg.wasm with the package, or point the element at it with its wasm attribute.`;
 }

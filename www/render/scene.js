@@ -127,8 +127,8 @@ function drawNumbers(ctx, view, scene) {
 /**
  * Each robot with its own glyphs: goal, start, safe disc, sensing circle, body. Batched by
  * colour (each kind of glyph of the robots of one colour is one path, filled or stroked once):
- * without a GPU every fill or stroke costs tens of microseconds to rasterise, whatever its
- * size, so a hundred robots drawn one by one cost over 20 ms a frame. A dash pattern starts
+ * without a GPU every fill or stroke has a fixed cost to rasterise, whatever its size, so the
+ * cost of a frame follows the number of paths, not of robots. A dash pattern starts
  * afresh on each glyph of a path, so the picture is the same. A crowd comes here only to be
  * drawn as vectors (render/svg.js).
  */

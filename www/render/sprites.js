@@ -1,11 +1,11 @@
 // Sprites: crowds drawn by stamping pre-rasterised glyphs into a pixel buffer.
 //
-// Measured in Chromium without a GPU (the headless test browser, and many laptops' fallback):
-// every Canvas 2D path call costs about half a microsecond, so 10,000 robot triangles cost
-// about 20 ms as paths and as much again for their goals, whatever the batching (fillRect is
-// no cheaper). Here each glyph is drawn once per colour, heading (HEADINGS steps) and size on
-// a small canvas, read back, and copied pixel by pixel into one ImageData per frame, which is
-// put on the scene with a single drawImage: 10,000 robots and their goals in a few ms.
+// In Chromium without a GPU (the headless test browser, and many laptops' fallback) every
+// Canvas 2D path call has a fixed cost, so a crowd's triangles drawn as paths cost in
+// proportion to the robots whatever the batching (fillRect is no cheaper). Here each glyph is
+// drawn once per colour, heading (HEADINGS steps) and size on a small canvas, read back, and
+// copied pixel by pixel into one ImageData per frame, which is put on the scene with a single
+// drawImage. tests/e2e/bench-browser.mjs holds the crowd's frame to its budget.
 
 /** Heading steps of the pre-rasterised glyphs (11.25° apart). */
 export const HEADINGS = 32;

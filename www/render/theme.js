@@ -147,7 +147,7 @@ export const VIRTUAL_OBSTACLE_DASH_PX = [4, 3];
 /**
  * Above this many robots, predicted paths are hairlines, one device pixel wide: without a GPU
  * a wider stroke is outlined and filled as a polygon, a hairline takes the rasteriser's fast
- * path (100 robots' paths: 30 ms against 5).
+ * path (tests/e2e/bench-browser.mjs holds the frames to their budget).
  */
 export const THIN_PREDICTED_ABOVE = 20;
 /**
