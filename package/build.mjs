@@ -26,7 +26,7 @@ const PKG = join(OUT, 'dvf-playground');
 const NAME = 'dvf-playground';
 
 /** The element's own files and folders, copied as they are (paths relative to www/). */
-const ELEMENT_FILES = ['dvf-playground.js', 'dvf-playground.d.ts', 'playground.css', 'io.js', 'exact-json.js'];
+const ELEMENT_FILES = ['dvf-playground.js', 'dvf-playground.d.ts', 'playground.css', 'io.js'];
 const ELEMENT_DIRS = ['playground', 'render', 'panels'];
 /** What of wasm-pack's output the package needs (not its package.json or README). */
 const PKG_FILES = ['dvf.js', 'dvf.d.ts', 'dvf_bg.wasm', 'dvf_bg.wasm.d.ts'];
