@@ -1,8 +1,9 @@
 //! Each robot's command from what it senses ([`Simulation::evaluation`], the one place where
 //! the method enters the loop), and where the evaluations are stored: in runs of
-//! [`STORED_BY`] robots, on the calling thread or on rayon's (`parallel.rs`).
+//! [`STORED_BY`] robots, all the robots in one run on the calling thread
+//! ([`Simulation::evaluate_here`]), or a run per chunk on rayon's threads (`parallel.rs`).
 
-use super::{parallel, Robot, Simulation};
+use super::{Robot, Simulation};
 use crate::controller::{evaluate_facing, Evaluation, Facing};
 use crate::safety;
 use crate::se2::{unrotate_by, Pose};
@@ -12,22 +13,6 @@ use crate::Command;
 use glam::DVec2;
 
 impl Simulation {
-    /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
-    /// Every robot sees the speeds of the same snapshot, whatever the loop order: the step's
-    /// integration has copied them (`step_here`), and a new simulation's are all 0.
-    ///
-    /// `advanced` is `Some` when the step's integration has also tested whether no robot moved
-    /// more than half the lists' skin (see [`Self::find_neighbours`]); `None` tests it here.
-    pub(super) fn evaluate_all(&mut self, advanced: Option<bool>) {
-        self.find_neighbours(advanced);
-        self.sense_all();
-        let closest2 = parallel::evaluate(self);
-        // The evaluations saw every listed pair within the lists' reach when their sensing
-        // radius is at least that reach (`evaluation`).
-        self.closest2 =
-            (self.listed() && self.reach <= self.params.sense_radius).then_some(closest2);
-    }
-
     /// Evaluates every robot on the calling thread, in one run (`evaluate_run`), and returns
     /// the smallest squared distance its evaluations found to a listed robot (`Scratch`).
     pub(super) fn evaluate_here(&mut self) -> f64 {

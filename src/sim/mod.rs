@@ -317,6 +317,22 @@ impl Simulation {
         self.observe();
     }
 
+    /// Evaluates every robot's controller from the current snapshot into `last`/`commands`.
+    /// Every robot sees the speeds of the same snapshot, whatever the loop order: the step's
+    /// integration has copied them (`step_here`), and a new simulation's are all 0.
+    ///
+    /// `advanced` is `Some` when the step's integration has also tested whether no robot moved
+    /// more than half the lists' skin (see [`Self::find_neighbours`]); `None` tests it here.
+    fn evaluate_all(&mut self, advanced: Option<bool>) {
+        self.find_neighbours(advanced);
+        self.sense_all();
+        let closest2 = parallel::evaluate(self);
+        // The evaluations saw every listed pair within the lists' reach when their sensing
+        // radius is at least that reach (`evaluation`).
+        self.closest2 =
+            (self.listed() && self.reach <= self.params.sense_radius).then_some(closest2);
+    }
+
     /// Updates the metrics from the current state (after [`Self::evaluate_all`], whose
     /// neighbour lists it reuses).
     fn observe(&mut self) {
