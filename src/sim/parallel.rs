@@ -14,8 +14,9 @@ use glam::DVec2;
 use rayon::prelude::*;
 
 /// From this many robots a step runs its passes on several threads (natively): below,
-/// rayon's hand-offs cost more than they save. `benches/peer.rs` and `benches/crowd.rs`
-/// measure a crowd on one thread and on several.
+/// rayon's hand-offs cost more than they save. `benches/peer.rs` measures a crowd's step on
+/// one thread and on several ("open, threads"), and `benches/crowd.rs` a step at 1,000 and
+/// 10,000 robots, on either side of it.
 pub const PARALLEL_FROM: usize = 2048;
 
 /// The fewest robots a thread takes at once in the step's cheap passes (integration, the
