@@ -9,7 +9,7 @@
 //
 // Why rounds, on one core: on a virtual machine whose host is shared the speed of a core can
 // change by half from one second to the next, and two cores can differ as much at the same
-// moment (README, Performance, "On another machine"), so that one run of each build, seconds
+// moment (docs/book/src/performance.md), so that one run of each build, seconds
 // apart, measures the host as much as the builds. A round takes a fraction of a second, the
 // median of the rounds' ratios sees both builds under the same load, and `taskset` keeps this
 // process and its native children on the same core.

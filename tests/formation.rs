@@ -22,10 +22,10 @@ fn narrow_slots(spacing: RangeInclusive<f64>, count: usize) -> Summary {
 }
 
 /// A modest formation sweep (slots 5 to 6 safe radii apart, obstacles on the way, random
-/// headings, 9 to 12 robots, 16 scenes) meets the acceptance rate of the README's figures,
+/// headings, 9 to 12 robots, 16 scenes) meets the acceptance rate of docs/notes-on-the-paper.md §5.6,
 /// ≥ 99.5 % of the robots arriving (here: all of them, since one of some 170 would be
 /// 0.6 %), with no violation and no robot chattering after it reached its slot. The bigger
-/// counts are in the README (Notes on the paper, formations).
+/// counts are in docs/notes-on-the-paper.md §5.6.
 #[test]
 fn a_formation_sweep_arrives_without_violation_or_chatter() {
     let recipe = Recipe {

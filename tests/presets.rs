@@ -95,7 +95,7 @@ fn table2_obstacles_block_the_free_paths() {
 
 /// Example 3 with the paper's avoidance taken literally: robots that enter each other's ring
 /// circle it (docs/notes-on-the-paper.md §5) and the line swap does not finish in its 15 s, while the default
-/// avoidance with its exit does (checked above). This is the difference the README describes.
+/// avoidance with its exit does (checked above). This is the difference docs/notes-on-the-paper.md §5 describes.
 #[test]
 fn literal_paper_avoidance_does_not_finish_the_line_swap() {
     let mut s = preset("example3-line-swap").unwrap();

@@ -151,7 +151,7 @@ fn random_pose_pairs_converge_with_unit_position_gains() {
 
 /// The default fade `g = 1e-6` also finishes the heading for an alignment gain only 2.5 times
 /// the attitude gain, where the residual equilibrium `k_ω θ̃ = k_a·fade·atan(…)` of a larger
-/// `g` leaves pairs above the heading tolerance (README, notes on the paper: `g = 1e-3` left
+/// `g` leaves pairs above the heading tolerance (docs/notes-on-the-paper.md §3: `g = 1e-3` left
 /// 52 of 500 such pairs unconverged).
 #[test]
 fn random_pose_pairs_converge_with_a_low_alignment_gain() {
@@ -307,7 +307,7 @@ fn random_obstacle_fields_never_produce_non_finite_states() {
 // ---------------------------------------------------------------------------------------------
 // The step function over arbitrary finite states.
 
-/// Cases of [`the_step_never_panics_nor_leaves_finite_numbers`]; the README quotes it.
+/// Cases of [`the_step_never_panics_nor_leaves_finite_numbers`]; docs/book/src/tests.md quotes it.
 const STATE_CASES: u32 = 20_000;
 
 /// A finite number anywhere from round-off to the validation's magnitude limit, either sign.
@@ -677,7 +677,7 @@ fn check_parse(text: &str) -> Result<(), TestCaseError> {
     Ok(())
 }
 
-/// Cases of each parser property below; the README quotes it.
+/// Cases of each parser property below; docs/book/src/tests.md quotes it.
 const PARSER_CASES: u32 = 4_096;
 
 proptest! {

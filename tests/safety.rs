@@ -1,4 +1,4 @@
-//! The planner's promises (README, "Safety"): robots that meet go round each other and on to
+//! The planner's promises (docs/book/src/safety.md): robots that meet go round each other and on to
 //! their goals, never closer than `2·r_ij`, never inside an obstacle; scenarios that break a
 //! promise from the start are refused with a message naming the field; every step size the
 //! validation accepts converges.
@@ -54,7 +54,7 @@ fn line_swaps_of_2_to_10_robots_all_arrive() {
 
 /// A fixed-seed sample of the random scenarios of `dvf sweep` (4 … 16 robots, 0 … 5
 /// obstacles, 100 × 100, 120 s, default parameters): at least 99 % of robots converge and no
-/// violation happens. The README quotes the full 1,000-scenario sweep.
+/// violation happens. docs/book/src/safety.md quotes the full 1,000-scenario sweep.
 #[test]
 fn random_scenarios_converge_without_violation() {
     let summary = sweep(&Recipe::default(), 0, 200, |_, _, _| {});
@@ -82,7 +82,7 @@ fn without_the_barrier_random_scenarios_collide() {
 /// Every step size from 0.001 s up to the largest the gains allow converges on the paper's
 /// examples with no violation; 0.1 s is refused, and the message says why and what to use.
 /// The formation preset, not one of the paper's examples, is left out: at dt = 0.02 one of
-/// its robots stays outside the grid (README, Known limits); every step size keeps it safe.
+/// its robots stays outside the grid (docs/book/src/known-limits.md); every step size keeps it safe.
 #[test]
 fn step_sizes_from_a_millisecond_to_the_limit_converge() {
     for dt in [0.001, 0.002, 0.005, 0.01, 0.02, 0.05, 0.08, 0.099] {

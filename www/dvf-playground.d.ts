@@ -102,6 +102,39 @@ export interface RobotReport {
   heading_error: number;
   /** The time after which the robot stayed within the tolerances to the end; null if it ended outside. */
   converged_at: number | null;
+  /** How its turn rate moved, step by step. */
+  smoothness: SmoothnessTally;
+}
+
+/**
+ * One robot's turn-rate history: a reversal is a turn (`|ω| > 1 rad/s`) opposite to its previous
+ * turn; "settled" counts from the moment it first reached its goal position.
+ */
+export interface SmoothnessTally {
+  /** Reversals over the run. */
+  reversals: number;
+  /** Reversals since it first reached its goal position. */
+  settled_reversals: number;
+  /** Steps since it first reached its goal position. */
+  settled_steps: number;
+  /** Largest `|ω_k − ω_{k−1}|` over the run (rad/s). */
+  max_omega_step: number;
+  /** Largest `|ω_k − ω_{k−1}|` since it first reached its goal position (rad/s). */
+  settled_max_omega_step: number;
+}
+
+/** The smoothness of all robots' commands over a run. */
+export interface Smoothness {
+  /** Reversals per simulated second over all robots and the whole run. */
+  reversals_per_s: number;
+  /** Reversals per simulated second after the robots reached their goal positions. */
+  settled_reversals_per_s: number;
+  /** Robots that reverse their turn more than once a second after reaching their goal position. */
+  chattering_robots: number;
+  /** Largest `|Δω|` of one step over all robots and the whole run (rad/s). */
+  max_omega_step: number;
+  /** Largest `|Δω|` of one step after a robot reached its goal position (rad/s). */
+  settled_max_omega_step: number;
 }
 
 /** The outcome of a run (what `dvf simulate` prints). */
@@ -118,6 +151,8 @@ export interface Report {
   min_obstacle_clearance: number | null;
   /** Events: each time two robots come closer than `2·safe_radius`, and each time a robot enters an obstacle disc. */
   violations: number;
+  /** How smoothly the robots turned. */
+  smoothness: Smoothness;
 }
 
 /** What a `change` event's `detail.kind` says happened. */
@@ -141,7 +176,7 @@ export type ChangeKind =
 /** The field overlay: arrows of the inspected robot's field, integral curves of its goal field, or none. */
 export type FieldMode = 'arrows' | 'curves' | 'none';
 
-/** The element's attributes (all optional; see README.md, "Embedding"). */
+/** The element's attributes (all optional; see docs/book/src/embedding.md). */
 export interface DvfPlaygroundAttributes {
   /** A preset name (default: the crate's default preset); `crowd-N` included. */
   preset?: string;

@@ -7,7 +7,7 @@
 // shared. This file is the element only: its attributes, its lifecycle and its public API. The
 // simulation and its edits are a controller (playground/controller.js) that the element
 // creates when first connected; the modules it imports are found relative to this file. The
-// types of everything below are in dvf-playground.d.ts; README.md, "Embedding", shows it in
+// types of everything below are in dvf-playground.d.ts; docs/book/src/embedding.md shows it in
 // use.
 //
 // Importing the module defines <dvf-playground> once (a second import, or a second copy,
@@ -18,113 +18,13 @@
 // replaces it. A module that cannot be loaded, a bad `src` or a bad `preset` shows its message
 // in the element's box, and it stays.
 //
-// Attributes (a change applies at once):
-//   preset    a preset name (default: the crate's default preset); `crowd-N` included
-//   src       URL of a scenario JSON file, resolved against the page (not this module);
-//             takes precedence over `preset`. A bad file (missing, an HTML page, an invalid
-//             scenario) or an unknown preset shows a message that says why, and it stays
-//             (no other scene instead: scenario() is null) until a scene loads
-//   controls  present: the full toolbar and side panels, and the scene can be edited; absent:
-//             play, step, reset and the field menu only, nothing to drag, and the wheel zooms
-//             only once the canvas is focused (or with Ctrl)
-//   editable  present: drags and keys edit the scene without the full controls
-//   readonly  present: a figure, not an editor, with or without `controls`: no drag, no keys,
-//             the toolbar's play, pause and reset only (and the plots with `controls`)
-//   autoplay  present: start playing once loaded; `autoplay="visible"`: play while on screen
-//             (IntersectionObserver), pause when scrolled out
-//   loop      present: start over from t = 0 at the end of the run (t = duration, or every
-//             robot at its goal)
-//   time      show the state at this time (s) on load: simulated from t = 0 up to there
-//   loading   `lazy`: load the scene only once the element comes near the viewport
-//   wasm      URL of dvf_bg.wasm (resolved against the page), read by the first element that
-//             connects; `DvfPlayground.wasmUrl = url` before that does the same
-//   field     `arrows` (default), `curves` or `none`
-//   theta0    θ(0) of the integral curves, in degrees (default 90)
-//   sensing   present: draw the sensing circles R_s
-//   theme     `light` or `dark` forces a theme; absent: the system's (prefers-color-scheme).
-//             The colours are custom properties `--dvf-…` (playground.css lists them)
-//
-// Methods:
-//   load(scenario)        a scenario object or JSON text as a new document (t = 0, view fitted,
-//                         undo cleared); throws an Error naming the offending field, the scene
-//                         is kept then
-//   loadPreset(name)      a preset by name (`crowd-N` included); on a bad name shows the
-//                         message, keeps the scene and returns false; true when loaded
-//   scenario()            the current scenario (edits included) as a plain object (a copy), in
-//                         the scenario format; null before the first scene
-//   presetName()          the preset shown, or null once the scene has been edited or imported
-//   robotCount            how many robots the scene has (0 before the first scene), without
-//                         the copy scenario() makes
-//   exportJson()          offers the scenario as a JSON file (the Scenario JSON button; a large
-//                         scene is written off the page's thread); resolves once offered, and
-//                         shows a message if it could not be written
-//   play(), pause()       the clock (play after the end starts again from t = 0)
-//   reset()               back to t = 0 at the scenario's starts, trails cleared
-//   step(n = 1)           advances n steps of dt and pauses; returns the steps taken; throws
-//                         for an n that is not a whole number from 0 to 10⁶
-//   seek(t)               the state at time t (s, clamped to the run), simulated from t = 0;
-//                         paused; returns the time reached; throws for a t that is no number
-//   worldToScreen(x, y)   page coordinates {x, y} (CSS px, like pageX/pageY) of world point
-//                         (x, y) in metres, for overlays
-//   showMessage(text, options)
-//                         shows text (as text, never HTML) over the canvas until the user acts
-//                         (an edit, a load, its × button); an empty text hides it. Options:
-//                         `info` (a notice, not an error), `actions` (buttons, [label, run]
-//                         pairs). www/main.js reports bad links and links too long with it
-//
-//   viewState()           what the view shows: {field, theta0 (degrees), sensing, robot (the
-//                         inspected, from 0), time (s), box ([xmin, ymin, xmax, ymax] in view
-//                         once panned or zoomed, else null)}; null before the first scene
-//   setViewState(state)   shows such a view (any of its fields; invalid ones are left as they
-//                         are; a time is gone to as a seek). www/main.js keeps it in the link
-//
-// Keys: handled anywhere inside the element (not while typing in a field); a key the element
-// handles stops there (stopPropagation and preventDefault): it never reaches the page. A
-// figure that is not an editor (no `controls` or `editable`) handles the clock's, the view's
-// and the help's keys only; a `readonly` one none: every key reaches the page.
-//
-// Properties:
-//   loaded                a promise that resolves once the first scene is shown (or, when it
-//                         could not be, its message: scenario() is null then)
-//   time                  the simulated time now (s); 0 before the first scene
-//   playing               whether the clock runs
-//   DvfPlayground.wasmUrl where the page loads the wasm module from (static; see `wasm`)
-//
-// Events:
-//   change                after each edit: a drag, a handle, a key, a parameter, a preset, an
-//                         import, an undo or a redo. `event.detail.kind` says which: `robot`,
-//                         `robot-heading`, `goal`, `goal-heading`, `obstacle`, `obstacle-radius`,
-//                         `obstacle-influence`, `add-robot`, `add-obstacle`, `delete`,
-//                         `params`, `preset`, `import`, `undo` or `redo`
-//   tick                  after the clock moved (each playing frame that stepped, step(),
-//                         seek(), each slice of the scrubber's seek); `event.detail.time` is
-//                         the time now (s)
-//   finished              the run reached its end: t = duration, or every robot at its goal
-//                         (where the playing clock stops); `event.detail.time`
-//   viewchange            after the view changed (field overlay, θ(0), sensing circles,
-//                         inspected robot, pan or zoom, the clock paused, a seek or a step)
-//
-// Diagnostics, for the end-to-end tests and benchmarks (not a stable API; null before the
-// first scene):
-//   pg                    the wasm `Playground` (read only: its counters and arrays)
-//   cache                 what a frame reads: time, duration, trail and prediction counters,
-//                         and the arrays (poses, status, trails, predicted, …) as views into
-//                         wasm memory (playground/wasm-views.js, `LiveViews`)
-//   trailsView()          the trail rings, `cache.trails`: a view, valid until the next call
-//                         into wasm
-//   view()                the world↔screen maps of the canvas now (render/camera.js)
-//   camera                the camera {cx, cy, scale} (m, m, CSS px per m)
-//   stats                 frames drawn, the first frame's time, each frame's work (ms), the
-//                         last edit's time; `stats.rasterInWork` makes a frame's work include
-//                         its rasterisation (playground/loop.js)
-//   stepMs                the mean wall time of one step (ms), for the step budget
-//   fieldMode             the field overlay shown: `arrows`, `curves` or `none`
-//   focusRobot            the inspected robot (its field, plots and line); settable
-//   plotGeometry          the two plots as last drawn: time axis ends, "now" line, ticks
-//   shadowRoot            open: the parts of the template (playground/template.js) are found by
-//                         their `data-id` (`canvas`, `message`, `clock`, `title`, `preset`,
-//                         `crowd-n`, `undo`, `export-json`, `import-file`, …), the parameters by
-//                         `input[name="k_v"]`
+// Its attributes, methods, properties and events are declared once, with their meaning, in
+// dvf-playground.d.ts; docs/book/src/embedding.md tabulates them (tests/e2e/book.mjs holds the
+// table to the declarations). An attribute's change applies at once. Keys are handled anywhere
+// inside the element (not while typing in a field); a key the element handles stops there: a
+// figure that is not an editor (no `controls` or `editable`) handles the clock's, the view's and
+// the help's keys only, a `readonly` one none. The members under "Diagnostics" in the
+// declarations serve the end-to-end tests and benchmarks and are not a stable API.
 
 import { Controller, DEFAULT_THETA0_DEG } from './playground/controller.js';
 import { TEMPLATE } from './playground/template.js';

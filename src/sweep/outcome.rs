@@ -90,17 +90,13 @@ impl Outcome {
                 .map(|t| (t / DT).round() as u64)
                 .collect();
             outcome.violations = report.violations;
-            // The tallies are native only (the wasm module's size budget).
-            #[cfg(not(target_arch = "wasm32"))]
-            {
-                let sums = &mut outcome.smoothness;
-                for r in &report.robots {
-                    sums.add(&r.smoothness, report.steps as u64, DT);
-                }
-                let round = |x: f64| (x * 1e3).round() / 1e3;
-                sums.max_omega_step = round(sums.max_omega_step);
-                sums.settled_max_omega_step = round(sums.settled_max_omega_step);
+            let sums = &mut outcome.smoothness;
+            for r in &report.robots {
+                sums.add(&r.smoothness, report.steps as u64, DT);
             }
+            let round = |x: f64| (x * 1e3).round() / 1e3;
+            sums.max_omega_step = round(sums.max_omega_step);
+            sums.settled_max_omega_step = round(sums.settled_max_omega_step);
             on_report(&scenario, &report);
         }
         outcome

@@ -105,8 +105,8 @@ export class ParamsPanel {
   }
 
   /**
-   * Warns of gains known to fail (docs/notes-on-the-paper.md, 3.2, and README.md,
-   * Parameters): k_a ≤ 2·k_ω lets a robot stall where the field is perpendicular to
+   * Warns of gains known to fail (docs/notes-on-the-paper.md, 3.2, and
+   * docs/book/src/scenario-format.md): k_a ≤ 2·k_ω lets a robot stall where the field is perpendicular to
    * its heading; k_v > k_ω leaves the attitude loop slower than the position loop.
    */
   warn(p) {

@@ -1,5 +1,5 @@
 // The results panel: what `dvf simulate` reports for the scenario (the run from its starts,
-// README.md, "The command line"): per robot when it converged and its final errors, the
+// docs/book/src/command-line.md): per robot when it converged and its final errors, the
 // smallest distance between two robots, the smallest clearance to an obstacle and the
 // violations, and the report as JSON to copy. The run is made off the page's thread (a module
 // worker, playground/results-worker.js) after each change; a change made meanwhile starts it
