@@ -48,11 +48,13 @@ const MIN_CHANGED_FRACTION = 0.002;
 const PG = 'dvf-playground';
 /**
  * The wasm module's budget as a reader downloads it: gzip at level 9 (bytes), what a server
- * sends for `Content-Encoding: gzip`. Beside the simulator, the live model and the facade, the
- * figure leaves room for the planners to come beside DVF and a QP solver for the safety filter,
- * so that the module's size is a decision about this figure rather than a shape of the code.
+ * sends for `Content-Encoding: gzip`. Beside the simulator, the live model and the facade, it
+ * leaves room for the planners to come and a QP solver for their barrier (clarabel, built alone
+ * for wasm32, gzips to about 160 KB). The module's current size is in
+ * docs/book/src/performance.md. A download of the whole budget takes about 1.5 s at 1.6 Mbit/s,
+ * once; the browser caches it.
  */
-const MAX_WASM_GZIP_BYTES = 160_000;
+const MAX_WASM_GZIP_BYTES = 300_000;
 /** The gzip level the budget is measured at (zlib's best compression). */
 const WASM_GZIP_LEVEL = constants.Z_BEST_COMPRESSION;
 
