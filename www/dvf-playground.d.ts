@@ -284,7 +284,7 @@ export declare class DvfPlayground extends HTMLElement {
   presetName(): string | null;
   /** How many robots the scene has (0 before the first scene), without the copy `scenario()` makes. */
   readonly robotCount: number;
-  /** Offers the scenario as a JSON file (a large scene is written off the page's thread); resolves once offered. */
+  /** Offers the scenario as a JSON file; resolves once offered. */
   exportJson(): Promise<void>;
   /** Plays the clock (from t = 0 again after the end). */
   play(): void;

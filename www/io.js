@@ -7,7 +7,7 @@ import { Playground } from './pkg/dvf.js';
 import { POSE_STRIDE, STATUS, STATUS_STRIDE, wasmReady } from './playground/wasm-views.js';
 
 /** The fragment that holds a scenario starts with this. */
-export const FRAGMENT_PREFIX = '#s=';
+const FRAGMENT_PREFIX = '#s=';
 /** Longest fragment accepted or written (characters): what links survive being pasted. */
 export const MAX_LINK_CHARS = 64 * 1024;
 /**

@@ -19,7 +19,7 @@ const SAMPLE = 6;
  * A pinned run: its report, its robots' paths, and per sample its time, the minimum distance
  * between two robots (NaN for one robot or independent runs) and each robot's position error.
  */
-export class Ghost {
+class Ghost {
   /**
    * @param {any} report the run's report (the JSON of dvf simulate)
    * @param {Float64Array} trajectories `[robots · samples · 6]` (see src/wasm/run.rs)

@@ -73,7 +73,7 @@ function wasmSourceNow() {
 }
 
 /** The module's URL as the page asks for it, for messages. */
-export function wasmSourceName() {
+function wasmSourceName() {
   const source = wasmSourceNow();
   return source instanceof URL && source.protocol !== 'data:' ? source.href : 'the inlined module';
 }
