@@ -206,12 +206,14 @@ impl Scenario {
     /// [`Error::Invalid`] naming the first offending field.
     pub fn validate(&self) -> Result<(), Error> {
         let p = &self.params;
-        finite("duration", self.duration)?;
+        // The duration and dt have limits of their own, below MAX_MAGNITUDE: each field's one
+        // "at most" message is its own (2e6 s and 1e6 s are refused alike).
+        finite_number("duration", self.duration)?;
         positive("duration", self.duration)?;
         if self.duration > MAX_DURATION {
             return invalid("duration", format!("must be at most {MAX_DURATION} s"));
         }
-        finite("dt", self.dt)?;
+        finite_number("dt", self.dt)?;
         positive("dt", self.dt)?;
         if self.dt > MAX_DT {
             return invalid("dt", format!("must be at most {MAX_DT} s"));
@@ -440,10 +442,17 @@ fn invalid<T>(field: &str, message: impl Into<String>) -> Result<T, Error> {
     })
 }
 
-fn finite(field: &str, v: f64) -> Result<(), Error> {
-    if !v.is_finite() {
-        return invalid(field, format!("must be a finite number, not {v}"));
+/// `v` is a finite number (not NaN, not infinite).
+fn finite_number(field: &str, v: f64) -> Result<(), Error> {
+    if v.is_finite() {
+        Ok(())
+    } else {
+        invalid(field, format!("must be a finite number, not {v}"))
     }
+}
+
+fn finite(field: &str, v: f64) -> Result<(), Error> {
+    finite_number(field, v)?;
     if v.abs() > MAX_MAGNITUDE {
         return invalid(
             field,
@@ -503,6 +512,20 @@ mod tests {
             err(r#"{"robots":[{"start":[0,0,0],"goal":[1,2,3]}],"dt":0.5}"#)
                 .starts_with("dt: must be at most")
         );
+        // The duration's one limit, however far above it: 1e6 s and 2e6 s (above MAX_MAGNITUDE)
+        // get the same message; so do dt's.
+        for duration in ["1e6", "2e6"] {
+            let e = err(&format!(
+                r#"{{"robots":[{{"start":[0,0,0],"goal":[1,2,3]}}],"duration":{duration}}}"#
+            ));
+            assert_eq!(e, "duration: must be at most 3600 s", "{duration}");
+        }
+        for dt in ["1e6", "2e6"] {
+            let e = err(&format!(
+                r#"{{"robots":[{{"start":[0,0,0],"goal":[1,2,3]}}],"dt":{dt}}}"#
+            ));
+            assert_eq!(e, "dt: must be at most 0.1 s", "{dt}");
+        }
         assert!(err(
             r#"{"robots":[{"start":[0,0,0],"goal":[1,2,3]}],"dt":0.09,"params":{"k_a":20}}"#
         )
