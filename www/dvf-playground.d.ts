@@ -200,7 +200,7 @@ export interface DvfPlaygroundAttributes {
   wasm?: string;
   /** The field overlay (default `arrows`). */
   field?: FieldMode;
-  /** θ(0) of the integral curves, in degrees (default 90). */
+  /** θ(0) of the integral curves, in radians (default π/2). */
   theta0?: number;
   /** Present: draw the sensing circles `R_s`. */
   sensing?: boolean;
@@ -389,12 +389,16 @@ export interface PlotGeometry {
   nowX: number;
   timeTicks: number[];
   valueTicks: number[];
+  /** The left axis's labels, one per value tick. */
+  valueLabels: string[];
+  /** The right axis's labels (the heading error, rad), empty for a plot without one. */
+  rightLabels: string[];
 }
 
 /** What a view shows, for a link: see `DvfPlayground.viewState`. */
 export interface ViewState {
   field: FieldMode;
-  /** θ(0) of the integral curves (degrees). */
+  /** θ(0) of the integral curves (rad). */
   theta0: number;
   sensing: boolean;
   /** The inspected robot, from 0. */

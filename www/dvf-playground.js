@@ -26,9 +26,9 @@
 // the help's keys only, a `readonly` one none. The members under "Diagnostics" in the
 // declarations serve the end-to-end tests and benchmarks and are not a stable API.
 
-import { Controller, DEFAULT_THETA0_DEG } from './playground/controller.js';
+import { Controller } from './playground/controller.js';
 import { TEMPLATE } from './playground/template.js';
-import { FIELD_MODES } from './playground/view-state.js';
+import { DEFAULT_THETA0, FIELD_MODES } from './playground/view-state.js';
 import { setWasmSource } from './playground/wasm-views.js';
 
 /** @typedef {import('./dvf-playground.js').DvfPlayground} Declared the element's declaration */
@@ -243,10 +243,10 @@ export class DvfPlayground extends Base {
 
   #readDisplayAttributes() {
     const field = FIELD_MODES.find((mode) => mode === this.getAttribute('field'));
-    const theta0 = Number(this.getAttribute('theta0') ?? DEFAULT_THETA0_DEG);
+    const theta0 = Number(this.getAttribute('theta0') ?? DEFAULT_THETA0);
     this.#controller.setDisplay({
       field: field ?? 'arrows',
-      theta0Deg: Number.isFinite(theta0) ? theta0 : DEFAULT_THETA0_DEG,
+      theta0: Number.isFinite(theta0) ? theta0 : DEFAULT_THETA0,
       sensing: this.hasAttribute('sensing'),
     });
   }

@@ -4,6 +4,7 @@
 // names the offending field); nothing of it is ever HTML.
 
 import { Playground } from './pkg/dvf.js';
+import { DEFAULT_THETA0 } from './playground/view-state.js';
 import { POSE_STRIDE, STATUS, STATUS_STRIDE, wasmReady } from './playground/wasm-views.js';
 
 /** The fragment that holds a scenario starts with this. */
@@ -46,7 +47,7 @@ export function viewSuffix(v) {
   if (!v) return '';
   const parts = [];
   if (v.field !== 'arrows') parts.push(`field=${v.field}`);
-  if (v.theta0 !== 90) parts.push(`theta0=${v.theta0}`);
+  if (v.theta0 !== DEFAULT_THETA0) parts.push(`theta0=${v.theta0}`);
   if (v.sensing) parts.push('sensing=1');
   if (v.robot > 0) parts.push(`robot=${v.robot + 1}`);
   if (v.time > 0) parts.push(`t=${Number(v.time.toFixed(6))}`);

@@ -69,13 +69,13 @@ await run(async ({ base, newPage }) => {
 
   // θ(0) changes the family of curves.
   const t0 = page.locator(`${FIELD} [data-id="theta0"]`);
-  await t0.fill('-90');
+  await t0.fill('-1.5708');
   await t0.press('Enter');
   await frames(page);
   const turned = await canvasStats(page, FIELD);
   check(
     changedFraction(curves, turned) > 0.02,
-    `θ(0) = −90° turns the curves (${(changedFraction(curves, turned) * 100).toFixed(1)} % of blocks)`,
+    `θ(0) = −π/2 turns the curves (${(changedFraction(curves, turned) * 100).toFixed(1)} % of blocks)`,
   );
   await page.screenshot({ path: join(RESULTS, 'embed-theta-minus-90.png'), fullPage: true });
 

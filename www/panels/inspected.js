@@ -3,6 +3,7 @@
 
 import { STATUS, STATUS_STRIDE } from '../playground/wasm-views.js';
 import { robotColour } from '../render/theme.js';
+import { fixed } from './format.js';
 
 /** Shows robot `i` of `robots` in `box`, from the status array `status` (wasm-views.js). */
 export function showInspected(box, i, robots, status) {
@@ -14,6 +15,6 @@ export function showInspected(box, i, robots, status) {
   // The robot's own colour beside its number, so the text and the canvas match.
   box.style.borderLeftColor = robotColour(i);
   box.textContent =
-    `Robot ${i + 1} of ${robots}: v = ${v.toFixed(2)} m/s, ω = ${omega.toFixed(2)} rad/s` +
+    `Robot ${i + 1} of ${robots}: v = ${fixed(v, 2)} m/s, ω = ${fixed(omega, 2)} rad/s` +
     `${nearObstacle ? ', avoiding an obstacle' : ''}${avoiding ? ', avoiding robots' : ''}.`;
 }

@@ -15,6 +15,7 @@ import {
   drawVirtualObstacle,
   strokeDashed,
 } from '../render/glyphs.js';
+import { drawViolationGlyph } from '../render/marks.js';
 import {
   AXIS_COLOUR,
   BOUNDS_FILL,
@@ -109,6 +110,7 @@ export function buildLegend(list) {
     ['safe radius r_ij', (c, x, y) => drawSafeDisc(c, x, y, 9, n)],
     ['virtual obstacle, R_c', (c, x, y) => drawVirtualObstacle(c, x, y, 9)],
     ['sensing radius R_s', (c, x, y) => drawSenseCircle(c, x, y, 10)],
+    ['violation: closer than 2·r_ij, or inside r_o', (c, x, y) => drawViolationGlyph(c, x, y, 9)],
     ['field Γ of the inspected robot', drawArrowGlyph],
     ['integral curve from θ(0)', drawCurveGlyph],
     ['handle: drag to turn / resize', (c, x, y) => drawHandle(c, x, y)],

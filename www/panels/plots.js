@@ -11,10 +11,13 @@ const PLOT_FONT = '10.5px system-ui, sans-serif';
 const SAFE_COLOUR = '#dc2626';
 const NOW_COLOUR = '#2563eb';
 /**
- * Inner margins of a plot (CSS px): left holds the value labels, right the second axis's (the
- * same in both plots, so that their time axes and "now" lines line up), bottom the times.
+ * Inner margins of a plot (CSS px), at least: left holds the value labels, right the second
+ * axis's, bottom the times. Left and right widen to the widest label of either plot (the same
+ * in both plots, so that their time axes and "now" lines line up): 20000 fits.
  */
 const PLOT_MARGIN_PX = { left: 34, right: 30, top: 16, bottom: 16 };
+/** Space between a value label and its axis, and before the canvas's edge (CSS px). */
+const LABEL_GAP_PX = 3;
 export const POSITION_COLOUR = '#0f766e';
 export const HEADING_COLOUR = '#d97706';
 
@@ -136,18 +139,14 @@ function plotSeries(scene, robot, series) {
  * @param {{x: number, y: number, w: number, h: number}} box
  * @param {Plot} plot
  */
-function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, rightLabel }, colours) {
+function drawPlot(ctx, box, plot, axes, margin, colours) {
+  const { title, duration, time, lines, hline, leftLabel, rightLabel } = plot;
   const { x, y, w, h } = box;
-  const px0 = x + PLOT_MARGIN_PX.left;
-  const px1 = x + w - PLOT_MARGIN_PX.right;
+  const px0 = x + margin.left;
+  const px1 = x + w - margin.right;
   const py0 = y + PLOT_MARGIN_PX.top;
   const py1 = y + h - PLOT_MARGIN_PX.bottom;
-  const max = { left: 0, right: 0 };
-  for (const l of lines) {
-    for (let k = 0; k < l.points.count; k++) max[l.axis] = Math.max(max[l.axis], l.points.v[k]);
-  }
-  if (hline) max.left = Math.max(max.left, hline.value * 1.5);
-  for (const k of ['left', 'right']) max[k] = niceCeil(max[k] || 1);
+  const max = { left: axes.left.max, right: axes.right.max };
   const sx = (t) => px0 + ((px1 - px0) * t) / (duration || 1);
   const sy = (v, axis) => py1 - ((py1 - py0) * v) / max[axis];
 
@@ -159,7 +158,8 @@ function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, ri
   ctx.lineWidth = 1;
   // Ticks: light grid lines across the plot, labelled on the axes.
   const timeTicks = ticks(duration || 1);
-  const valueTicks = ticks(max.left);
+  const timeLabels = tickLabels(timeTicks);
+  const valueTicks = axes.left.ticks;
   ctx.strokeStyle = colours.axis;
   ctx.globalAlpha = 0.5;
   ctx.beginPath();
@@ -178,7 +178,9 @@ function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, ri
   ctx.strokeRect(Math.round(px0) + 0.5, Math.round(py0) + 0.5, Math.round(px1 - px0), Math.round(py1 - py0));
   ctx.textBaseline = 'middle';
   ctx.textAlign = 'right';
-  for (const v of valueTicks) ctx.fillText(fmt(v), px0 - 3, Math.min(py1, Math.max(py0 + 1, sy(v, 'left'))));
+  for (const [k, v] of valueTicks.entries()) {
+    ctx.fillText(axes.left.labels[k], px0 - LABEL_GAP_PX, Math.min(py1, Math.max(py0 + 1, sy(v, 'left'))));
+  }
   if (leftLabel) {
     ctx.textAlign = 'left';
     ctx.fillText(leftLabel, x + 2, (py0 + py1) / 2);
@@ -186,15 +188,15 @@ function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, ri
   if (rightLabel) {
     ctx.textAlign = 'left';
     ctx.fillStyle = HEADING_COLOUR;
-    for (const v of ticks(max.right)) {
-      ctx.fillText(fmt(v), px1 + 3, Math.min(py1, Math.max(py0 + 1, sy(v, 'right'))));
+    for (const [k, v] of axes.right.ticks.entries()) {
+      ctx.fillText(axes.right.labels[k], px1 + LABEL_GAP_PX, Math.min(py1, Math.max(py0 + 1, sy(v, 'right'))));
     }
     ctx.fillStyle = colours.text;
   }
   ctx.textBaseline = 'top';
   for (const [k, t] of timeTicks.entries()) {
     ctx.textAlign = k === 0 ? 'left' : k === timeTicks.length - 1 ? 'right' : 'center';
-    ctx.fillText(k === timeTicks.length - 1 ? `${fmt(t)} s` : fmt(t), sx(t), py1 + 2);
+    ctx.fillText(k === timeTicks.length - 1 ? `${timeLabels[k]} s` : timeLabels[k], sx(t), py1 + 2);
   }
 
   if (lines.length === 0) {
@@ -241,7 +243,37 @@ function drawPlot(ctx, box, { title, duration, time, lines, hline, leftLabel, ri
   ctx.lineTo(nx, py1);
   ctx.strokeStyle = NOW_COLOUR;
   ctx.stroke();
-  return { x0: px0, x1: px1, nowX: nx, timeTicks, valueTicks };
+  return {
+    x0: px0,
+    x1: px1,
+    nowX: nx,
+    timeTicks,
+    valueTicks,
+    valueLabels: axes.left.labels,
+    rightLabels: rightLabel ? axes.right.labels : [],
+  };
+}
+
+/**
+ * The scales of `plot`'s two value axes: each its top (a niceCeil of the largest value, of 1.5
+ * times `hline` on the left, 1 for none), ticks and their labels.
+ * @param {Plot} plot
+ */
+function axesOf({ lines, hline }) {
+  const max = { left: 0, right: 0 };
+  for (const l of lines) {
+    for (let k = 0; k < l.points.count; k++) {
+      const v = l.points.v[k];
+      if (Number.isFinite(v)) max[l.axis] = Math.max(max[l.axis], v);
+    }
+  }
+  if (hline) max.left = Math.max(max.left, hline.value * 1.5);
+  const axis = (m) => {
+    const top = niceCeil(m || 1);
+    const t = ticks(top);
+    return { max: top, ticks: t, labels: tickLabels(t) };
+  };
+  return { left: axis(max.left), right: axis(max.right) };
 }
 
 /** Ticks from 0 to `max` (a niceCeil) at a 1, 2, 2.5 or 5 × 10^k step: about TICKS of them. */
@@ -260,8 +292,26 @@ function niceCeil(v) {
   return 10 * pow;
 }
 
-function fmt(v) {
-  return Math.abs(v) >= 10 || Number.isInteger(v) ? v.toFixed(0) : v.toPrecision(2);
+/** Ticks at or above this (or at or below its inverse, but 0) are labelled in exponential notation. */
+const EXPONENTIAL_FROM = 1e5;
+
+/**
+ * Labels of `values` (ticks at a 1, 2, 2.5 or 5 × 10^k step from 0), as many decimals as the
+ * step needs, so that no two are the same ("0.25", "0.5", "0.75"; never "0.000" at every tick);
+ * in exponential notation ("2.5e-5", "1e6") when plain text would take more than four
+ * decimals or six digits.
+ * @param {number[]} values
+ */
+export function tickLabels(values) {
+  const top = Math.max(...values.map(Math.abs), 0);
+  if (top === 0) return values.map(() => '0');
+  const exact = (d) => values.every((v) => Math.abs(Number(v.toFixed(d)) - v) <= top * 1e-9);
+  let decimals = 0;
+  while (decimals < 12 && !exact(decimals)) decimals++;
+  if (top >= EXPONENTIAL_FROM || decimals > 4) {
+    return values.map((v) => (v === 0 ? '0' : Number(v.toPrecision(3)).toExponential().replace('e+', 'e')));
+  }
+  return values.map((v) => v.toFixed(decimals));
 }
 
 /** The two plots of one playground on their canvas, with their series kept between frames. */
@@ -315,36 +365,46 @@ export class PlotsPanel {
       if (pairLines.length) pairLines.push({ points: ghostPair, colour: GHOST_COLOUR, axis: 'left', ghost: true });
     }
     this.duration = scene.duration;
-    const top = drawPlot(
-      ctx,
-      { x: 0, y: 0, w: width, h: half - gap },
-      {
-        title: 'min distance between two robots (m)',
-        duration: scene.duration,
-        time: scene.time,
-        lines: pairLines,
-        hline: pairLines.length ? { value: 2 * s.params.safe_radius, colour: SAFE_COLOUR, label: '2·r_ij' } : null,
-      },
-      this.colours,
-    );
+    /** @type {Plot} */
+    const pairPlot = {
+      title: 'min distance between two robots (m)',
+      duration: scene.duration,
+      time: scene.time,
+      lines: pairLines,
+      hline: pairLines.length ? { value: 2 * s.params.safe_radius, colour: SAFE_COLOUR, label: '2·r_ij' } : null,
+    };
+    /** @type {Plot} */
+    const errorPlot = {
+      title: `robot ${robot + 1}: errors to its goal`,
+      duration: scene.duration,
+      time: scene.time,
+      rightLabel: 'rad',
+      lines: [
+        { points: series.pastPos, colour: POSITION_COLOUR, axis: 'left' },
+        { points: series.futurePos, colour: POSITION_COLOUR, axis: 'left', dashed: true },
+        { points: series.pastHead, colour: HEADING_COLOUR, axis: 'right' },
+        { points: series.futureHead, colour: HEADING_COLOUR, axis: 'right', dashed: true },
+        ...(ghost
+          ? [{ points: ghostPos, colour: GHOST_COLOUR, axis: /** @type {'left'} */ ('left'), ghost: true }]
+          : []),
+      ],
+    };
+    const axes = [axesOf(pairPlot), axesOf(errorPlot)];
+    // Both plots' margins fit the widest label of either, so that their time axes line up.
+    ctx.font = PLOT_FONT;
+    const widest = (labels) => Math.max(0, ...labels.map((t) => ctx.measureText(t).width));
+    const room = (side) => Math.ceil(Math.max(...axes.map((a) => widest(a[side].labels))) + 2 * LABEL_GAP_PX);
+    const margin = {
+      left: Math.max(PLOT_MARGIN_PX.left, room('left')),
+      right: Math.max(PLOT_MARGIN_PX.right, widest(axes[1].right.labels) + 2 * LABEL_GAP_PX),
+    };
+    const top = drawPlot(ctx, { x: 0, y: 0, w: width, h: half - gap }, pairPlot, axes[0], margin, this.colours);
     const bottom = drawPlot(
       ctx,
       { x: 0, y: half + gap, w: width, h: half - gap },
-      {
-        title: `robot ${robot + 1}: errors to its goal`,
-        duration: scene.duration,
-        time: scene.time,
-        rightLabel: 'rad',
-        lines: [
-          { points: series.pastPos, colour: POSITION_COLOUR, axis: 'left' },
-          { points: series.futurePos, colour: POSITION_COLOUR, axis: 'left', dashed: true },
-          { points: series.pastHead, colour: HEADING_COLOUR, axis: 'right' },
-          { points: series.futureHead, colour: HEADING_COLOUR, axis: 'right', dashed: true },
-          ...(ghost
-            ? [{ points: ghostPos, colour: GHOST_COLOUR, axis: /** @type {'left'} */ ('left'), ghost: true }]
-            : []),
-        ],
-      },
+      errorPlot,
+      axes[1],
+      margin,
       this.colours,
     );
     this.geometry = [top, bottom];

@@ -1,12 +1,16 @@
 // The results panel: what `dvf simulate` reports for the scenario (the run from its starts,
 // docs/book/src/command-line.md): per robot when it converged and its final errors, the
 // smallest distance between two robots, the smallest clearance to an obstacle and the
-// violations, and the report as JSON to copy. The run is made off the page's thread (a module
+// violations, where they happened (a mark on the canvas, render/marks.js, and a button over
+// the canvas with their count that goes there), and the report as JSON to copy. The run is made
+// off the page's thread (a module
 // worker, playground/results-worker.js) after each change; a change made meanwhile starts it
 // again. Runs larger than AUTO_ROBOT_STEPS wait for the Compute button.
 
+import { GHOST_MAX_ROBOTS } from '../playground/ghost.js';
 import { messageOf } from '../playground/message.js';
 import { runWorker } from '../playground/wasm-views.js';
+import { markText } from '../render/marks.js';
 import { el } from './dom.js';
 
 /** Runs up to this many robot-steps start by themselves (the 100-robot crowd: about 2 s). */
@@ -15,6 +19,9 @@ const AUTO_ROBOT_STEPS = 2_000_000;
 const TABLE_ROBOTS = 20;
 /** A change waits this long (ms) for the next before the run starts (a drag is many). */
 const SETTLE_MS = 300;
+
+/** The Pin button's title when it can pin the run. */
+const PIN_TITLE = 'Pin this run as a ghost to compare with the next (faded on the canvas and in the plots)';
 
 /** @param {number | null} v @param {number} digits */
 const num = (v, digits = 3) => (v == null ? '—' : Number(v).toPrecision(digits));
@@ -40,12 +47,20 @@ export class ResultsPanel {
    *   scenario: () => any,
    *   pin: import('../playground/ghost.js').Pin,
    *   showMessage: (text: string, options?: {info?: boolean}) => void,
+   *   goTo: (mark: import('../playground/violations.js').ViolationMark) => void,
+   *   requestDraw: () => void,
    * }} host the template's parts by `data-id`; whether the panel is shown (`controls`); the
-   *   scenario (the model itself, not a copy: read only); the pin; the message over the canvas
+   *   scenario (the model itself, not a copy: read only); the pin; the message over the canvas;
+   *   what shows a violation's time and robot; what redraws the canvas
    */
   constructor(host) {
     this.host = host;
     this.box = host.$('results');
+    /** @type {import('../playground/violations.js').ViolationMark[]} where the run's violations happened */
+    this.marks = [];
+    /** The mark the violations button goes to next. */
+    this.nextMark = 0;
+    host.$('violations').addEventListener('click', () => this.goToMark());
     /** @type {Worker | null} */
     this.worker = null;
     this.id = 0;
@@ -63,14 +78,32 @@ export class ResultsPanel {
     const { ghost, pending } = c.pin;
     const box = c.$('pinned');
     c.$('pin').textContent = ghost ? 'Unpin' : pending ? 'Pinning…' : 'Pin';
+    this.showPin();
     box.hidden = !ghost;
     if (!ghost) return;
     const lines = summary(ghost.report, null);
     box.replaceChildren(el('p', `Pinned run (faded), ${ghost.name}:`, 'muted'), ...lines.map((t) => el('p', t)));
   }
 
+  /**
+   * The Pin button: offered for a scene it can pin, disabled with the reason in its title for
+   * a crowd above GHOST_MAX_ROBOTS (a pinned run stays unpinnable).
+   */
+  showPin() {
+    const c = this.host;
+    const button = c.$('pin');
+    const robots = c.scenario()?.robots.length ?? 0;
+    const refused = robots > GHOST_MAX_ROBOTS && !c.pin.ghost && !c.pin.pending;
+    button.disabled = refused;
+    button.title = refused
+      ? `Pin compares runs of up to ${GHOST_MAX_ROBOTS} robots; this scene has ${robots.toLocaleString('en')}`
+      : PIN_TITLE;
+  }
+
   /** The scenario changed: its results are computed again (after SETTLE_MS). */
   stale() {
+    this.showPin();
+    this.showMarks(null, []);
     if (!this.host.active()) return;
     this.report = null;
     delete this.box.dataset.ready;
@@ -116,16 +149,50 @@ export class ResultsPanel {
       if (e.data.id !== id) return;
       this.stop();
       if (e.data.error) this.box.replaceChildren(el('p', `Could not run the scenario: ${messageOf(e.data)}`));
-      else this.show(e.data.report);
+      else this.show(e.data.report, e.data.marks ?? []);
     };
     worker.postMessage({ id, scenario: this.host.scenario() });
   }
 
-  /** Shows `report` (the JSON of `dvf simulate`). */
-  show(report) {
+  /**
+   * The run's violations over the canvas: a button with their count that goes to each in turn,
+   * hidden without; the marks drawn on the canvas.
+   * @param {any} report the run's report, null while there is none
+   * @param {import('../playground/violations.js').ViolationMark[]} marks
+   */
+  showMarks(report, marks) {
+    this.marks = marks;
+    this.nextMark = 0;
+    const button = this.host.$('violations');
+    const count = report?.violations ?? 0;
+    button.hidden = count === 0;
+    button.textContent = `⚠ ${count} violation${count === 1 ? '' : 's'}${marks.length ? `: go to t = ${marks[0].time.toFixed(2)} s` : ''}`;
+    button.title = marks.length
+      ? `Where: ${marks.map(markText).join('; ')}. Click to go there.`
+      : 'Robots closer than 2·r_ij, or inside an obstacle';
+    this.host.requestDraw();
+  }
+
+  /** Goes to the next mark: its time, its robot inspected; the button names the one after. */
+  goToMark() {
+    const marks = this.marks;
+    if (!marks.length) return;
+    const m = marks[this.nextMark % marks.length];
+    this.nextMark = (this.nextMark + 1) % marks.length;
+    this.host.goTo(m);
+    const next = marks[this.nextMark];
+    const count = this.report?.violations ?? 0;
+    this.host.$('violations').textContent =
+      `⚠ ${count} violation${count === 1 ? '' : 's'}: go to t = ${next.time.toFixed(2)} s`;
+  }
+
+  /** Shows `report` (the JSON of `dvf simulate`) and `marks`, where its violations happened. */
+  show(report, marks = []) {
     this.report = report;
+    this.showMarks(report, marks);
     this.host.$('copy-results').disabled = false;
     const lines = summary(report, this.host.scenario().params.safe_radius);
+    if (marks.length) lines.push(...marks.map((m) => `where: ${markText(m)}`));
     const table = el('table', undefined, 'results-table');
     const head = el('tr');
     for (const h of ['robot', 'converged at (s)', 'position error (m)', 'heading error (rad)'])

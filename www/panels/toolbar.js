@@ -1,5 +1,5 @@
 // The toolbar of a playground: preset menu (with the crowd's N box), play, step, reset and
-// speed, undo and redo, add and delete, the field overlay with θ(0), the sensing circles and
+// speed, undo and redo, add and delete, the field overlay with θ(0) (rad), the sensing circles and
 // fit, and the exports and import. Without the `controls` attribute the stylesheet hides all
 // but play, step, reset and the field menu.
 
@@ -9,6 +9,7 @@ import { exportPng, exportSvg } from '../playground/record.js';
 import { DEFAULT_SPEED, SPEEDS } from '../playground/loop.js';
 import { messageOf } from '../playground/message.js';
 import { el } from './dom.js';
+import { boxText, exact, numberBox, parseNumber } from './format.js';
 
 /** A crowd loaded from the menu has this many robots unless the N box says otherwise. */
 const DEFAULT_CROWD = 1000;
@@ -34,7 +35,7 @@ export function presetLabel({ name, summary }) {
  * @typedef {Pick<import('../playground/controller.js').Controller, '$' | 'canvas' | 'clock'
  *   | 'exportJson' | 'fit' | 'gestures' | 'help' | 'history' | 'importScenario' | 'limits'
  *   | 'loadPreset' | 'loop' | 'messages' | 'painter' | 'pg' | 'presetName' | 'recorder'
- *   | 'scenario' | 'selection' | 'setDisplay' | 'showMessage' | 'theta0Deg'>
+ *   | 'scenario' | 'selection' | 'setDisplay' | 'showMessage' | 'theta0'>
  *   & import('../playground/actions.js').ActionsHost
  *   & import('../playground/record.js').PictureHost} ToolbarHost
  */
@@ -91,11 +92,24 @@ export class Toolbar {
     $('delete').addEventListener('click', () => deleteSelection(c));
     $('fit').addEventListener('click', () => c.fit());
     $('help').addEventListener('click', () => c.help.toggle());
-    // The display menus: a θ(0) that is not a number keeps the one shown (and its text).
-    const display = () => {
-      const v = Number($('theta0').value);
-      const typed = Number.isFinite(v) && $('theta0').value.trim() !== '';
-      c.setDisplay({ field: $('field').value, theta0Deg: typed ? v : c.theta0Deg, sensing: $('sensing').checked });
+    // The display menus: a θ(0) that is not a number keeps the one shown, the typed text
+    // marked, and says what is wrong with it.
+    const theta0 = $('theta0');
+    numberBox(theta0, () => c.theta0);
+    /** @param {Event} e */
+    const display = (e) => {
+      const typed = parseNumber(theta0.value);
+      const ok = typed.error === undefined && !typed.empty;
+      if (ok) {
+        if (theta0.getAttribute('aria-invalid') === 'true') c.showMessage('');
+        theta0.removeAttribute('aria-invalid');
+        delete theta0.dataset.edited;
+      } else if (e.target === theta0) {
+        theta0.setAttribute('aria-invalid', 'true');
+        c.showMessage(`θ(0): ${typed.empty ? 'a value is needed' : typed.error} (an angle in rad)`);
+      }
+      const angle = ok ? /** @type {number} */ (typed.value) : c.theta0;
+      c.setDisplay({ field: $('field').value, theta0: angle, sensing: $('sensing').checked });
     };
     for (const id of ['field', 'theta0', 'sensing']) $(id).addEventListener('change', display);
     $('export-json').addEventListener('click', () => c.exportJson());
@@ -203,10 +217,13 @@ export class Toolbar {
   }
 
   /** The field menu, θ(0) and the sensing box showing the controller's display options. */
-  showDisplay({ fieldMode, theta0Deg, showSensing }) {
+  showDisplay({ fieldMode, theta0, showSensing }) {
     const $ = this.c.$;
     $('field').value = fieldMode;
-    $('theta0').value = String(theta0Deg);
+    const box = $('theta0');
+    if (box.getAttribute('aria-invalid') !== 'true') {
+      box.value = box === box.getRootNode().activeElement ? exact(theta0) : boxText(theta0, box);
+    }
     $('sensing').checked = showSensing;
   }
 

@@ -5,7 +5,10 @@
 import { messageOf } from './message.js';
 import { POSE_STRIDE } from './wasm-views.js';
 
-/** A new obstacle's radius as a fraction of the view's smaller side; its ring is twice that. */
+/**
+ * A new obstacle's radius as a fraction of the view's smaller side, rounded to two significant
+ * digits (3.2 m, not 3.1719…); its ring is twice that.
+ */
 const NEW_OBSTACLE_FRACTION = 0.05;
 /** Candidate spots tried, along a spiral about the view's centre, for a new robot. */
 const ADD_ROBOT_TRIES = 400;
@@ -21,6 +24,16 @@ const ADD_ROBOT_GAP = 3;
  *   | 'view' | 'views'>} ActionsHost
  */
 
+/** The power of ten at or below `v` (> 0): the grid step of a new robot or obstacle. */
+function gridStep(v) {
+  return 10 ** Math.floor(Math.log10(v));
+}
+
+/** `v` on the grid of step `step` (a power of ten), written as that grid writes it (0.3, not 0.30000000000000004). */
+function onGrid(v, step) {
+  return Number((Math.round(v / step) * step).toPrecision(12)) || 0;
+}
+
 /**
  * The first start/goal pair along a widening spiral about (x, y) that keeps clear of every
  * robot and obstacle ring of `s`, the start `span` · (−0.2, −0.1) off it and the goal
@@ -29,6 +42,9 @@ const ADD_ROBOT_GAP = 3;
  */
 function freeSpot(s, x, y, span) {
   const gap = ADD_ROBOT_GAP * (s.params?.safe_radius ?? 1);
+  // Starts and goals on a round grid, a tenth of the gap or finer.
+  const step = gridStep(gap / 10);
+  const at = (px, py) => [onGrid(px, step), onGrid(py, step)];
   const free = (p, key, ring) =>
     s.robots.every((r) => Math.hypot(r[key][0] - p[0], r[key][1] - p[1]) >= gap) &&
     s.obstacles.every(
@@ -37,14 +53,11 @@ function freeSpot(s, x, y, span) {
   for (let k = 0; k < ADD_ROBOT_TRIES; k++) {
     const a = k * 2.4; // radians: the golden angle spreads the tries evenly
     const r = gap * Math.sqrt(k);
-    const start = [x - 0.2 * span + r * Math.cos(a), y - 0.1 * span + r * Math.sin(a)];
-    const goal = [x + 0.2 * span + r * Math.cos(a), y + 0.1 * span + r * Math.sin(a)];
+    const start = at(x - 0.2 * span + r * Math.cos(a), y - 0.1 * span + r * Math.sin(a));
+    const goal = at(x + 0.2 * span + r * Math.cos(a), y + 0.1 * span + r * Math.sin(a));
     if (free(start, 'start', false) && free(goal, 'goal', true)) return [start, goal];
   }
-  return [
-    [x - 0.2 * span, y - 0.1 * span],
-    [x + 0.2 * span, y + 0.1 * span],
-  ];
+  return [at(x - 0.2 * span, y - 0.1 * span), at(x + 0.2 * span, y + 0.1 * span)];
 }
 
 /**
@@ -73,6 +86,8 @@ export function addRobotInView(c) {
  */
 function freeObstacleSpot(s, poses, x, y, radius, ring) {
   const gap = s.params?.safe_radius ?? 1;
+  // Centres on a round grid: the power of ten at or below the radius.
+  const step = gridStep(radius);
   const clear = (cx, cy) =>
     s.obstacles.every((o) => Math.hypot(o.center[0] - cx, o.center[1] - cy) > o.influence + ring) &&
     s.robots.every(
@@ -84,11 +99,11 @@ function freeObstacleSpot(s, poses, x, y, radius, ring) {
   for (let k = 0; k < ADD_ROBOT_TRIES; k++) {
     const a = k * 2.4; // the golden angle, as in freeSpot
     const d = ring * Math.sqrt(k);
-    const cx = x + d * Math.cos(a);
-    const cy = y + d * Math.sin(a);
+    const cx = onGrid(x + d * Math.cos(a), step);
+    const cy = onGrid(y + d * Math.sin(a), step);
     if (clear(cx, cy)) return [cx, cy];
   }
-  return [x, y];
+  return [onGrid(x, step), onGrid(y, step)];
 }
 
 /**
@@ -97,7 +112,7 @@ function freeObstacleSpot(s, poses, x, y, radius, ring) {
  */
 export function addObstacleInView(c) {
   const view = c.view();
-  const r = (NEW_OBSTACLE_FRACTION * Math.min(view.width, view.height)) / view.scale;
+  const r = Number(((NEW_OBSTACLE_FRACTION * Math.min(view.width, view.height)) / view.scale).toPrecision(2));
   let index = 0;
   const ok = c.gestures.change('add-obstacle', () => {
     const center = freeObstacleSpot(

@@ -42,13 +42,11 @@ import { messageOf } from './message.js';
 import { MessageBox } from './message-box.js';
 import { Painter } from './paint.js';
 import { Recorder } from './record.js';
-import { validViewState, viewStateOf } from './view-state.js';
+import { DEFAULT_THETA0, validViewState, viewStateOf } from './view-state.js';
 import { LiveViews, wasmFailure, wasmReady } from './wasm-views.js';
 
 /** A `viewchange` event waits this long (ms) for the next change (a pan is many). */
 const VIEW_EVENT_MS = 400;
-/** θ(0) of the integral curves until the element says otherwise (degrees): the paper's Fig. 1. */
-export const DEFAULT_THETA0_DEG = 90;
 /** Each preset's robot count and JSON text, made once per page (Controller.#presetOf). */
 let presetTexts = null;
 
@@ -89,7 +87,8 @@ export class Controller {
     this.focusRobot = 0;
     /** @type {import('../dvf-playground.js').FieldMode} */
     this.fieldMode = 'arrows';
-    this.theta0Deg = DEFAULT_THETA0_DEG;
+    /** θ(0) of the integral curves (rad). */
+    this.theta0 = DEFAULT_THETA0;
     this.showSensing = false;
     /** Drags and keys may edit the scene (the element's `controls`/`editable`, not `readonly`). */
     this.editable = true;
@@ -183,6 +182,11 @@ export class Controller {
       scenario: () => this.model,
       pin: this.pin,
       showMessage: (text, options) => this.showMessage(text, options),
+      goTo: (mark) => {
+        this.inspect(mark.robots[0]);
+        this.clock.seekTo(mark.time);
+      },
+      requestDraw: () => this.requestDraw(),
     });
     this.selectionPanel = new SelectionPanel({
       form: this.$('selection'),
@@ -195,6 +199,7 @@ export class Controller {
       change: (kind, edits) => this.gestures.change(kind, edits),
       edits: this,
       message: () => this.$('message-text').textContent,
+      showMessage: (text) => this.showMessage(text),
     });
     buildLegend(this.$('legend'));
     buildPlotsLegend(this.$('plots-legend'));
@@ -517,10 +522,10 @@ export class Controller {
     this.requestDraw();
   }
 
-  /** The field overlay, θ(0) of the curves (degrees) and the sensing circles. */
-  setDisplay({ field, theta0Deg, sensing }) {
+  /** The field overlay, θ(0) of the curves (rad) and the sensing circles. */
+  setDisplay({ field, theta0, sensing }) {
     this.fieldMode = field;
-    this.theta0Deg = theta0Deg;
+    this.theta0 = theta0;
     this.showSensing = sensing;
     this.toolbar.showDisplay(this);
     this.viewChanged();
@@ -534,14 +539,14 @@ export class Controller {
 
   /** What the view shows, for a link (view-state.js). */
   viewState() {
-    const display = { field: this.fieldMode, theta0Deg: this.theta0Deg, sensing: this.showSensing };
+    const display = { field: this.fieldMode, theta0: this.theta0, sensing: this.showSensing };
     return viewStateOf(this.view(), display, this.focusRobot, this.views.time, this.camera.user);
   }
 
   /** Shows what of view `state` is valid for this scene (view-state.js); a time as a seek. */
   setViewState(state) {
     if (!this.pg || !state) return;
-    const shown = { field: this.fieldMode, theta0Deg: this.theta0Deg, sensing: this.showSensing };
+    const shown = { field: this.fieldMode, theta0: this.theta0, sensing: this.showSensing };
     const { display, inspect, camera, seek } = validViewState(state, shown, {
       robots: this.model.robots.length,
       duration: this.pg.duration,

@@ -1,16 +1,18 @@
 // One frame's picture of a playground: the scene on its canvas (with the field overlay, the
-// trail layer and the crowd's sprites), the clock, title and hint over it, and with the
+// trail layer and the crowd's sprites, the marks of the run's violations), the clock, title and hint over it, and with the
 // controls the plots and the inspected robot's line in the side panel.
 
 import { showInspected } from '../panels/inspected.js';
 import { PlotsPanel } from '../panels/plots.js';
 import { fitCanvas } from '../render/canvas.js';
+import { drawViolationMarks } from '../render/marks.js';
 import { drawScene } from '../render/scene.js';
 import { drawGhost } from './ghost.js';
 import { SpriteLayer } from '../render/sprites.js';
 import { SvgContext } from '../render/svg.js';
 import { FIELD_SPACING_PX, readPalette, setPalette } from '../render/theme.js';
 import { TRAIL_SETTLE_MS, TrailLayer } from '../render/trails.js';
+import { fixed } from '../panels/format.js';
 import { messageOf } from './message.js';
 
 /** At most this many field arrows per side. */
@@ -44,8 +46,8 @@ function clockText(scene) {
  * per-frame text it updates.
  * @typedef {Pick<import('./controller.js').Controller, '$' | 'canvas' | 'fieldMode' | 'focusRobot'
  *   | 'generation' | 'host' | 'input' | 'limits' | 'loop' | 'model' | 'pg' | 'pin'
- *   | 'recorder' | 'requestDraw' | 'selection' | 'selectionPanel' | 'showMessage'
- *   | 'showSensing' | 'theta0Deg' | 'toolbar' | 'view' | 'views'>} PaintHost
+ *   | 'recorder' | 'requestDraw' | 'results' | 'selection' | 'selectionPanel' | 'showMessage'
+ *   | 'showSensing' | 'theta0' | 'toolbar' | 'view' | 'views'>} PaintHost
  */
 
 export class Painter {
@@ -106,6 +108,7 @@ export class Painter {
       }, TRAIL_SETTLE_MS);
     }
     drawScene(ctx, view, scene, c.pin.ghost ? () => drawGhost(ctx, view, c.pin.ghost) : null);
+    drawViolationMarks(ctx, view, c.results.marks, scene.time);
     const loop = c.loop;
     const slowed =
       loop.playing && loop.rate < loop.speed * 0.995
@@ -172,6 +175,7 @@ export class Painter {
     const scene = { ...this.scene(view, width, height, 1), vector: true };
     const g = /** @type {any} */ (ctx);
     drawScene(g, view, scene, c.pin.ghost ? () => drawGhost(g, view, c.pin.ghost) : null);
+    drawViolationMarks(g, view, c.results.marks, scene.time);
     stamp(g, c.model.name, clockText(scene));
     return ctx.toString();
   }
@@ -180,7 +184,8 @@ export class Painter {
     const c = this.c;
     if (c.input.drag) return '';
     const robot = c.focusRobot + 1;
-    if (c.fieldMode === 'curves') return `integral curves of robot ${robot}'s goal field from θ(0) = ${c.theta0Deg}°`;
+    if (c.fieldMode === 'curves')
+      return `integral curves of robot ${robot}'s goal field from θ(0) = ${fixed(c.theta0, 2)} rad`;
     if (c.fieldMode === 'arrows') return `arrows: the field Γ of robot ${robot} at its current heading`;
     return '';
   }
@@ -219,11 +224,11 @@ export class Painter {
     const c = this.c;
     const s = c.model;
     const g = s.robots[c.focusRobot]?.goal;
-    const key = JSON.stringify([c.focusRobot, g, c.theta0Deg, s.bounds]);
+    const key = JSON.stringify([c.focusRobot, g, c.theta0, s.bounds]);
     if (key !== this.curvesKey) {
       const [x0, y0, x1, y1] = s.bounds;
       try {
-        this.curves = c.pg.integralCurves(c.focusRobot, (c.theta0Deg * Math.PI) / 180, x0, y0, x1, y1, CURVE_GRID);
+        this.curves = c.pg.integralCurves(c.focusRobot, c.theta0, x0, y0, x1, y1, CURVE_GRID);
       } catch (e) {
         c.showMessage(messageOf(e));
         this.curves = null;

@@ -1,12 +1,14 @@
 // A module worker that runs a scenario to its end off the page's thread (`Run`: the run that
 // `dvf simulate` makes) and posts its report, the figures of the results panel
 // (panels/results.js), and with `trajectories` its trajectories too (a pinned run,
-// ghost.js). Messages in: first {wasm}, where the page loads the module from (its URL or its
-// bytes: wasm-views.js, runWorker), then {id, scenario, trajectories?}; out:
-// {id, report, trajectories?, samples?} or {id, error}. The module is loaded on the first run
-// only.
+// ghost.js), and for a run with violations where they happened (violations.js: `marks`).
+// Messages in: first {wasm}, where the page loads the module from (its URL or its bytes:
+// wasm-views.js, runWorker), then {id, scenario, trajectories?}; out:
+// {id, report, marks, trajectories?, samples?} or {id, error}. The module is loaded on the
+// first run only.
 
 import init, { Run } from '../pkg/dvf.js';
+import { findViolations } from './violations.js';
 
 /** Where the module comes from (the first message), and the module once a run asks for it. */
 let source = null;
@@ -32,7 +34,10 @@ self.onmessage = async (e) => {
           { transfer: [trajectories.buffer] },
         );
       } else {
-        self.postMessage({ id, report: run.report() });
+        const report = run.report();
+        const marks =
+          report.violations > 0 ? findViolations(run.trajectories(), run.sampleCount, scenario, report) : [];
+        self.postMessage({ id, report, marks });
       }
     } finally {
       run.free();

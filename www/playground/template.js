@@ -9,7 +9,7 @@ export const TEMPLATE = `
   <div class="toolbar" role="toolbar" aria-label="Playground controls">
     <span class="group full">
       <label>Preset <select data-id="preset" aria-label="Load a preset of the paper's examples"></select></label>
-      <label data-id="crowd-box" hidden>N <input data-id="crowd-n" class="crowd-n" type="number" min="1" step="1" aria-label="Robots in the crowd"></label>
+      <label data-id="crowd-box" hidden>N <input data-id="crowd-n" class="crowd-n" inputmode="numeric" autocomplete="off" aria-label="Robots in the crowd"></label>
     </span>
     <span class="group">
       <button type="button" data-id="play" aria-pressed="false" title="Play / pause (Space)">Play</button>
@@ -29,7 +29,7 @@ export const TEMPLATE = `
       <label>Field <select data-id="field" aria-label="Field display">
         <option value="arrows">arrows Γ</option><option value="curves">integral curves</option><option value="none">off</option>
       </select></label>
-      <label>θ(0) <input data-id="theta0" type="number" step="15" aria-label="θ(0) of the integral curves, degrees"> °</label>
+      <label title="The start attitude θ(0) of the integral curves (rad)">θ(0) <input data-id="theta0" aria-label="θ(0) of the integral curves, radians"> rad</label>
       <label class="check full"><input data-id="sensing" type="checkbox"> R_s</label>
       <button type="button" data-id="fit" class="full" title="Fit the scenario in the view (F)">Fit</button>
       <button type="button" data-id="help" title="The controls and keys (?)" aria-label="Help: the controls and keys">?</button>
@@ -51,6 +51,7 @@ export const TEMPLATE = `
         aria-label="Playground canvas. Drag robots, goals and obstacles; keys: Space play, S step, R reset, arrows move, Q and E turn, A add robot, O add obstacle, Delete, brackets select, F fit."></canvas>
       <div class="overlay">
         <div class="overlay-row"><div class="clock" data-id="clock"></div><div class="title" data-id="title"></div></div>
+        <button type="button" class="violations full" data-id="violations" hidden></button>
         <div class="hint" data-id="hint"></div>
       </div>
       <div class="help" data-id="help-panel" role="dialog" aria-label="Controls and keys" hidden>
@@ -76,7 +77,7 @@ export const TEMPLATE = `
         <ul class="plots-legend" data-id="plots-legend"></ul>
       </section>
       <section>
-        <h3>Results <button type="button" data-id="copy-results" class="small" disabled title="Copy the report (the JSON of dvf simulate)">Copy JSON</button><button type="button" data-id="pin" class="small" title="Pin this run as a ghost to compare with the next (faded on the canvas and in the plots)">Pin</button></h3>
+        <h3>Results <button type="button" data-id="copy-results" class="small" disabled title="Copy the report (the JSON of dvf simulate)">Copy JSON</button><button type="button" data-id="pin" class="small">Pin</button></h3>
         <div class="results pinned" data-id="pinned" hidden></div>
         <div class="results" data-id="results"></div>
       </section>

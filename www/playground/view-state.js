@@ -5,9 +5,13 @@
 /** The field overlays. @type {import('../dvf-playground.js').FieldMode[]} */
 export const FIELD_MODES = ['arrows', 'curves', 'none'];
 
+/** θ(0) of the integral curves (rad) until the element or the link says otherwise: π/2, the paper's Fig. 1a. */
+export const DEFAULT_THETA0 = Math.PI / 2;
+
 /**
- * The display options of a view: the field overlay, θ(0) (degrees), the sensing circles.
- * @typedef {{field: import('../dvf-playground.js').FieldMode, theta0Deg: number, sensing: boolean}} Display
+ * The display options of a view: the field overlay, θ(0) (rad, as every angle of the page),
+ * the sensing circles.
+ * @typedef {{field: import('../dvf-playground.js').FieldMode, theta0: number, sensing: boolean}} Display
  */
 
 /**
@@ -17,10 +21,10 @@ export const FIELD_MODES = ['arrows', 'curves', 'none'];
  * @param {Display} display
  * @returns {import('../dvf-playground.js').ViewState}
  */
-export function viewStateOf(view, { field, theta0Deg, sensing }, robot, time, user) {
+export function viewStateOf(view, { field, theta0, sensing }, robot, time, user) {
   return {
     field,
-    theta0: theta0Deg,
+    theta0,
     sensing,
     robot,
     time,
@@ -41,7 +45,7 @@ export function validViewState(state, shown, { robots, duration, width, height }
   const { field, theta0, sensing, robot, time, box } = state;
   const display = {
     field: FIELD_MODES.includes(field) ? field : shown.field,
-    theta0Deg: Number.isFinite(theta0) ? theta0 : shown.theta0Deg,
+    theta0: Number.isFinite(theta0) ? theta0 : shown.theta0,
     sensing: typeof sensing === 'boolean' ? sensing : shown.sensing,
   };
   const inspect = Number.isInteger(robot) && robot >= 0 && robot < robots ? robot : null;

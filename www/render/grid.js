@@ -1,5 +1,6 @@
 // The metre grid of the scene, its axes, and their labels.
 
+import { fixed } from '../panels/format.js';
 import { AXIS_COLOUR, GRID_COLOUR, LABEL_COLOUR, LABEL_FONT } from './theme.js';
 
 /** Desired distance between grid lines (CSS px); the step is rounded to 1, 2 or 5 × 10^k m. */
@@ -55,13 +56,13 @@ export function drawLabels(ctx, view) {
   ctx.textBaseline = 'bottom';
   for (const x of xs) {
     const px = view.sx(x);
-    if (px > 40 && px < view.width - 10) ctx.fillText(x.toFixed(decimals), px, view.height - 6);
+    if (px > 40 && px < view.width - 10) ctx.fillText(fixed(x, decimals), px, view.height - 6);
   }
   ctx.textAlign = 'right';
   ctx.textBaseline = 'middle';
   for (const y of ys) {
     const py = view.sy(y);
-    if (py > 8 && py <= view.height - 24) ctx.fillText(y.toFixed(decimals), 36, py);
+    if (py > 8 && py <= view.height - 24) ctx.fillText(fixed(y, decimals), 36, py);
   }
   ctx.textAlign = 'left';
   ctx.textBaseline = 'bottom';
