@@ -1,4 +1,4 @@
-# Quick start: `make serve` builds the wasm package and serves the page; `make test` runs every
+# Quick start: `make serve` builds the wasm package and the book and serves both; `make test` runs every
 # test. `make test` asserts behaviour only; budgets (ms per step, per frame, per drag) are
 # checked by `make bench`, which is not part of `make test` or `.ci/run`.
 PORT ?= 8080
@@ -46,11 +46,12 @@ docs: package
 	cp -r target/package/dvf-playground target/docs/book/src/dvf-playground
 	mdbook build target/docs/book --dest-dir $(CURDIR)/target/book
 
-# The playground; the book too, at /book/, once `make docs` has built it (the page links it).
-serve: build-wasm
+# The playground and the book at /book/, which the page's header links: the book is built
+# first (docs), so that the link works on a fresh clone.
+serve: docs
+	ln -sfn ../target/book www/book
 	@echo "dvf playground: http://127.0.0.1:$(PORT)/"
-	@if [ -d target/book ]; then ln -sfn ../target/book www/book; echo "the book: http://127.0.0.1:$(PORT)/book/"; \
-	else rm -f www/book; fi
+	@echo "the book: http://127.0.0.1:$(PORT)/book/"
 	python3 -m http.server $(PORT) --bind 127.0.0.1 --directory www
 
 lint: lint-comments lint-rust lint-js
@@ -88,6 +89,7 @@ test-browser: tools
 # figures in test-results/).
 test-e2e: package docs
 	node tests/e2e/smoke.mjs
+	node tests/e2e/forms.mjs
 	node tests/e2e/embed.mjs
 	node tests/e2e/figures.mjs
 	node tests/e2e/recipes.mjs
