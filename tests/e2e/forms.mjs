@@ -325,6 +325,37 @@ await run(async ({ base, newPage }) => {
     await page.evaluate((sel) => document.querySelector(sel).loadPreset('example4-obstacle-formation'), PG);
     await frames(page);
     check(await button.isHidden(), 'a scene without violations shows no count');
+    // An intrusion into an obstacle, from a recorded run made by hand: robot 2 is 0.8 m inside
+    // the disc at t = 0.2 s, robot 1 never near it; the robots stay 10 m apart (no pair mark).
+    const intrusion = await page.evaluate(async () => {
+      const { findViolations } = await import('./playground/violations.js');
+      const row = (t, x, y) => [t, x, y, 0, 0, 0];
+      const trajectories = new Float64Array([
+        ...row(0, 0, 10),
+        ...row(0.1, 1, 10),
+        ...row(0.2, 2, 10),
+        ...row(0, 3, 0),
+        ...row(0.1, 4, 0),
+        ...row(0.2, 5.2, 0),
+      ]);
+      const scenario = {
+        robots: [{}, {}],
+        obstacles: [{ center: [5, 0], radius: 1, influence: 2 }],
+        params: { safe_radius: 1 },
+      };
+      return findViolations(trajectories, 3, scenario, { min_pair_distance: 10, min_obstacle_clearance: -0.8 });
+    });
+    const m = intrusion[0];
+    check(
+      intrusion.length === 1 &&
+        m.kind === 'obstacle' &&
+        m.robots[0] === 1 &&
+        m.obstacle === 0 &&
+        m.time === 0.2 &&
+        Math.abs(m.distance - 0.8) < 1e-12 &&
+        m.x === 5.2,
+      `an obstacle intrusion is marked at the robot, its time and depth (${JSON.stringify(intrusion)}; depth to 1e-12 m: one subtraction)`,
+    );
   });
 
   await item('Pin for the crowds it refuses', async () => {

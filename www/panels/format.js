@@ -43,7 +43,8 @@ function roomOf(input) {
 /**
  * `v` rounded to the most significant digits that `input` shows whole (its width and font;
  * BOX_CHARS characters when it is not laid out): 6.9999999999 as "7", −8.744e−7 as "-8.7e-7",
- * −0 as "0". The value itself is not changed: `exact` is what the box shows on focus.
+ * −0 as "0" (tests/e2e/forms.mjs, "by-number boxes"). The value itself is not changed: `exact`
+ * is what the box shows on focus.
  * @param {number} v
  * @param {HTMLInputElement} [input]
  */

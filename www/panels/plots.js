@@ -13,7 +13,8 @@ const NOW_COLOUR = '#2563eb';
 /**
  * Inner margins of a plot (CSS px), at least: left holds the value labels, right the second
  * axis's, bottom the times. Left and right widen to the widest label of either plot (the same
- * in both plots, so that their time axes and "now" lines line up): 20000 fits.
+ * in both plots, so that their time axes and "now" lines line up): 20000 fits
+ * (tests/e2e/forms.mjs, "plot ticks").
  */
 const PLOT_MARGIN_PX = { left: 34, right: 30, top: 16, bottom: 16 };
 /** Space between a value label and its axis, and before the canvas's edge (CSS px). */

@@ -7,7 +7,7 @@ import { POSE_STRIDE } from './wasm-views.js';
 
 /**
  * A new obstacle's radius as a fraction of the view's smaller side, rounded to two significant
- * digits (3.2 m, not 3.1719…); its ring is twice that.
+ * digits (3.2 m, not 3.1719…; tests/e2e/forms.mjs checks it); its ring is twice that.
  */
 const NEW_OBSTACLE_FRACTION = 0.05;
 /** Candidate spots tried, along a spiral about the view's centre, for a new robot. */

@@ -4,6 +4,7 @@
 // and how close; solid while the time shown is that of the violation, dashed otherwise.
 
 import { fixed } from '../panels/format.js';
+import { BOUNDS_FILL } from './theme.js';
 
 /** The marks' colour: the plots' 2·r_ij line and the page's errors. */
 export const VIOLATION_COLOUR = '#dc2626';
@@ -65,8 +66,11 @@ export function drawViolationMarks(ctx, view, marks, time) {
     const tx = x + MARK_RADIUS_PX + 3;
     const ty = y - MARK_RADIUS_PX + 2;
     const w = ctx.measureText(text).width;
-    ctx.fillStyle = 'rgba(255, 255, 255, 0.85)';
+    // The label on the scene's own background (light or dark), a little see-through.
+    ctx.globalAlpha = 0.85;
+    ctx.fillStyle = BOUNDS_FILL;
     ctx.fillRect(tx - 2, ty - 14, w + 4, 15);
+    ctx.globalAlpha = 1;
     ctx.fillStyle = VIOLATION_COLOUR;
     ctx.fillText(text, tx, ty);
   }
