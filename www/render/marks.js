@@ -63,9 +63,11 @@ export function drawViolationMarks(ctx, view, marks, time) {
     const y = view.sy(m.y);
     drawViolationGlyph(ctx, x, y, MARK_RADIUS_PX, Math.abs(time - m.time) <= NOW_WITHIN_S);
     const text = markText(m);
-    const tx = x + MARK_RADIUS_PX + 3;
-    const ty = y - MARK_RADIUS_PX + 2;
     const w = ctx.measureText(text).width;
+    // Right of the ring, or left of it where the canvas ends first; never past its left edge.
+    let tx = x + MARK_RADIUS_PX + 3;
+    if (tx + w > view.width - 4) tx = Math.max(4, x - MARK_RADIUS_PX - 3 - w);
+    const ty = y - MARK_RADIUS_PX + 2;
     // The label on the scene's own background (light or dark), a little see-through.
     ctx.globalAlpha = 0.85;
     ctx.fillStyle = BOUNDS_FILL;
