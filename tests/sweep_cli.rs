@@ -410,3 +410,41 @@ fn the_parallel_recipe_reruns_failed_jobs() {
     }
     assert!(found > 0, "the recipe is in the docs");
 }
+
+/// `--write` names a grid point's failing scenario by its seed and values, and the file runs
+/// under `dvf simulate` (seed 42 of the narrowest formations fails, as in tests/cli.rs).
+#[test]
+fn a_grid_sweep_writes_failures_by_seed_and_values() {
+    let dir = scratch("write");
+    let out = dir.display().to_string();
+    let args = [
+        "sweep",
+        "--family",
+        "formation",
+        "--spacing",
+        "3..=3.5",
+        "--seed",
+        "42",
+        "--count",
+        "1",
+        "--grid",
+        "k_a=10",
+        "--write",
+        &out,
+    ];
+    let v: Value = serde_json::from_str(&ok(&args)).unwrap();
+    assert_eq!(
+        v["groups"][0]["failures"].as_array().map(Vec::len),
+        Some(1),
+        "{v}"
+    );
+    let file = dir.join("seed-42-k_a=10.0.json");
+    let report: Value = serde_json::from_str(&ok(&["simulate", file.to_str().unwrap()])).unwrap();
+    let arrived = report["robots"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|r| !r["converged_at"].is_null())
+        .count();
+    assert_eq!(Some(arrived as u64), v["groups"][0]["converged"].as_u64());
+}

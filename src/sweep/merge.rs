@@ -10,6 +10,10 @@ use super::outcome::{Outcome, Sweep};
 use super::settings::label;
 use super::summary::{Group, Groups, Summaries, Summary};
 
+/// At most this many scenarios in a sweep that is merged (the command line runs at most a
+/// million).
+pub const MAX_MERGE: usize = 10_000_000;
+
 /// Why a set of lines is not one whole sweep.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum MergeError {
@@ -99,8 +103,9 @@ impl Merge {
     /// Reads one line (`place` names it in messages: `file:line`); a blank line is skipped.
     ///
     /// # Errors
-    /// A line that is not an outcome, does not name its sweep, names another sweep than the
-    /// first line, or lies outside its sweep.
+    /// A line that is not an outcome, does not name its sweep (or names one that `dvf sweep`
+    /// does not write), names another sweep than the first line, or lies outside its sweep.
+    /// A refused line is not kept.
     pub fn add(&mut self, place: &str, line: &str) -> Result<(), MergeError> {
         if line.trim().is_empty() {
             return Ok(());
@@ -121,30 +126,26 @@ impl Merge {
                 place: place.to_owned(),
             });
         };
-        match &self.first {
-            None => self.first = Some((place.to_owned(), sweep.clone(), o.seed)),
-            Some((first_place, first, first_seed)) => {
-                let same = (
-                    &first.id,
-                    first.seed,
-                    first.count,
-                    first.points,
-                    first.shard[1],
-                ) == (
-                    &sweep.id,
-                    sweep.seed,
-                    sweep.count,
-                    sweep.points,
-                    sweep.shard[1],
-                );
-                if !same {
-                    return Err(MergeError::OtherSweep {
-                        place: place.to_owned(),
-                        seed: o.seed,
-                        first_place: first_place.clone(),
-                        first_seed: *first_seed,
-                    });
-                }
+        let [k, n] = sweep.shard;
+        let total = sweep.count.checked_mul(sweep.points);
+        if !(1..=n).contains(&k) || total.is_none_or(|t| t == 0 || t > MAX_MERGE) {
+            return Err(MergeError::NotALine {
+                place: place.to_owned(),
+                message: format!(
+                    "its sweep ({} scenarios at {} points, shard {k}/{n}) is not one dvf sweep writes",
+                    sweep.count, sweep.points
+                ),
+            });
+        }
+        if let Some((first_place, first, first_seed)) = &self.first {
+            let key = |s: &Sweep| (s.id.clone(), s.seed, s.count, s.points, s.shard[1]);
+            if key(first) != key(&sweep) {
+                return Err(MergeError::OtherSweep {
+                    place: place.to_owned(),
+                    seed: o.seed,
+                    first_place: first_place.clone(),
+                    first_seed: *first_seed,
+                });
             }
         }
         let offset = o.seed.wrapping_sub(sweep.seed);
@@ -157,6 +158,9 @@ impl Merge {
                 last: sweep.seed.wrapping_add(sweep.count as u64).wrapping_sub(1),
                 points: sweep.points,
             });
+        }
+        if self.first.is_none() {
+            self.first = Some((place.to_owned(), sweep, o.seed));
         }
         self.outcomes.push(o);
         Ok(())
@@ -204,7 +208,7 @@ impl Merge {
                 total,
             });
         }
-        if points == 1 && outcomes[0].values.is_empty() {
+        if points == 1 && outcomes.first().is_none_or(|o| o.values.is_empty()) {
             return Ok(Summaries::One(Summary::of(sweep.seed, &outcomes)));
         }
         Ok(Summaries::Grid(Groups {
@@ -225,4 +229,66 @@ fn at(o: &Outcome) -> String {
         return String::new();
     }
     format!(" at {}", label(&o.values, " "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sweep::{Recipe, RecipeKey};
+    use crate::testing::test;
+
+    /// A skipped scenario's line of the sweep of `count` seeds from 10, shard `[k, n]`.
+    fn line(seed: u64, count: usize, shard: [usize; 2]) -> String {
+        let recipe = Recipe::default();
+        let o = Outcome {
+            sweep: Some(Sweep {
+                id: Sweep::id_of(&recipe, &[], 10, count),
+                seed: 10,
+                count,
+                points: 1,
+                point: 0,
+                shard,
+            }),
+            seed,
+            values: crate::sweep::Values::new(),
+            recipe: RecipeKey::of(&recipe),
+            skipped: true,
+            dt: recipe.dt,
+            obstacles: 0,
+            robots: Vec::new(),
+            violations: 0,
+            closest: None,
+            smoothness: crate::sim::smoothness::Sums::default(),
+        };
+        serde_json::to_string(&o).unwrap()
+    }
+
+    /// Lines that no sweep writes are refused, not trusted: a shard K of N outside 1 … N, a
+    /// sweep too large to check; a refused line is not kept, and the rest still merges.
+    #[test]
+    fn lines_no_sweep_writes_are_refused_without_a_panic() {
+        let mut m = Merge::new();
+        let zero = line(10, 2, [1, 1]).replace("\"shard\":[1,1]", "\"shard\":[1,0]");
+        assert!(matches!(
+            m.add("a:1", &zero),
+            Err(MergeError::NotALine { .. })
+        ));
+        let huge = line(10, 2, [1, 1]).replace("\"count\":2", "\"count\":18446744073709551615");
+        assert!(matches!(
+            m.add("a:2", &huge),
+            Err(MergeError::NotALine { .. })
+        ));
+        let outside = line(9, 2, [1, 1]);
+        assert!(matches!(
+            m.add("a:3", &outside),
+            Err(MergeError::Outside { .. })
+        ));
+        m.add("a:4", &line(10, 2, [1, 1])).unwrap();
+        m.add("a:5", &line(11, 2, [1, 1])).unwrap();
+        let Summaries::One(s) = m.finish().unwrap() else {
+            panic!("one summary without a grid")
+        };
+        assert_eq!((s.seed, s.skipped, s.success_rate), (10, 2, None));
+        assert_eq!(Merge::new().finish(), Err(MergeError::Empty));
+    }
 }
