@@ -118,13 +118,18 @@ fn merge_refuses_a_set_that_is_not_one_whole_sweep() {
     ]);
     let longer = file(&dir, "longer.jsonl", &longer.lines().collect::<Vec<_>>());
     refused(&["sweep", "merge", &a, &longer], &["another sweep"]);
-    // A line as shards wrote it before they named their sweep.
-    let mut old: Value = serde_json::from_str(one[0]).unwrap();
-    old.as_object_mut().unwrap().remove("sweep");
-    let old = file(&dir, "old.jsonl", &[&old.to_string()]);
+    // A line as shards wrote it before they named their sweep (tests/cli.rs wrote these).
+    let old = r#"{"seed":0,"recipe":{"family":"random","robots":[3,4],"obstacles":[0,5],"avoidance":"exit","barrier_rate":5.0},"skipped":false,"robots":3,"converged_steps":[735,880,721],"violations":0,"smoothness":{"reversals":2,"steps":36000,"settled_reversals":0,"settled_steps":33705,"chattering":0,"max_omega_step":8.826,"settled_max_omega_step":0.0}}"#;
+    let old = file(&dir, "old.jsonl", &[old]);
     refused(
         &["sweep", "merge", &old],
         &["old.jsonl:1", "rerun every shard"],
+    );
+    // A summary is not a shard's line.
+    let summary = file(&dir, "summary.json", &[whole.trim_end()]);
+    refused(
+        &["sweep", "merge", &summary],
+        &["summary.json:1", "summary"],
     );
 }
 

@@ -115,10 +115,21 @@ impl Merge {
             message: e.to_string(),
         };
         let value: serde_json::Value = serde_json::from_str(line).map_err(not_a_line)?;
-        if value.get("sweep").is_none() && value.get("seed").is_some() {
-            return Err(MergeError::Unmarked {
-                place: place.to_owned(),
-            });
+        if value.get("sweep").is_none() {
+            // Lines of shards from before they named their sweep list `converged_steps`.
+            if value.get("converged_steps").is_some() {
+                return Err(MergeError::Unmarked {
+                    place: place.to_owned(),
+                });
+            }
+            if value.get("scenarios").is_some() || value.get("groups").is_some() {
+                return Err(MergeError::NotALine {
+                    place: place.to_owned(),
+                    message:
+                        "it is a sweep's summary; merge the lines that dvf sweep --shard K/N prints"
+                            .into(),
+                });
+            }
         }
         let o: Outcome = serde_json::from_value(value).map_err(not_a_line)?;
         let Some(sweep) = o.sweep.clone() else {
