@@ -27,8 +27,8 @@ pub const MAX_POINTS: usize = 10_000;
 pub type Values = BTreeMap<String, Value>;
 
 /// The JSON value `text` stands for on a command line: `none` or `null` for none, a number as
-/// a number (an `f64`), anything else as a string (a mode such as `paper`, or text that the
-/// setting then refuses as the file reader would refuse it).
+/// a number (an `f64`), other JSON as itself (`true`, `"paper"`), anything else as a string (a
+/// mode such as `paper`, or text that the setting then refuses as the file reader would).
 #[must_use]
 pub fn value_of(text: &str) -> Value {
     let text = text.trim();
@@ -37,7 +37,8 @@ pub fn value_of(text: &str) -> Value {
     }
     match serde_json::from_str::<Value>(text) {
         Ok(Value::Number(n)) => n.as_f64().map_or(Value::Null, Value::from),
-        _ => Value::String(text.to_owned()),
+        Ok(v) => v,
+        Err(_) => Value::String(text.to_owned()),
     }
 }
 
@@ -249,6 +250,8 @@ mod tests {
         assert_eq!(value_of("5"), Value::from(5.0));
         assert_eq!(value_of("none"), Value::Null);
         assert_eq!(value_of("paper"), Value::from("paper"));
+        assert_eq!(value_of("\"paper\""), Value::from("paper"));
+        assert_eq!(value_of("true"), Value::from(true));
         // A number serde_json cannot hold stays text, which the setting refuses.
         assert_eq!(value_of("1e400"), Value::from("1e400"));
         let mut r = Recipe::default();
