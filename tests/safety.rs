@@ -61,7 +61,7 @@ fn random_scenarios_converge_without_violation() {
     assert_eq!(summary.skipped, 0);
     assert_eq!(summary.violations, 0, "{:?}", summary.failures);
     assert!(
-        summary.success_rate >= 0.99,
+        summary.success_rate >= Some(0.99),
         "{} of {} converged: {:?}",
         summary.converged,
         summary.robots,

@@ -1,6 +1,6 @@
 //! The scenarios of a sweep: scenario `seed` of a recipe depends on the seed alone.
 
-use super::recipe::{Family, Recipe, DT};
+use super::recipe::{Family, Recipe};
 use crate::obstacle::Obstacle;
 use crate::scenario::{RobotSpec, Scenario};
 use glam::DVec2;
@@ -129,7 +129,7 @@ pub fn formation_scenario(recipe: &Recipe, seed: u64) -> Option<Scenario> {
     ))
 }
 
-/// A scenario of `recipe` (its duration and parameters, the sweep's step).
+/// A scenario of `recipe` (its duration, step and parameters).
 fn scene(
     recipe: &Recipe,
     name: String,
@@ -140,7 +140,7 @@ fn scene(
         name,
         bounds: None,
         duration: recipe.duration,
-        dt: DT,
+        dt: recipe.dt,
         params: recipe.params,
         independent: false,
         robots,

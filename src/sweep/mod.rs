@@ -11,23 +11,35 @@
 //! `k` of a sweep from seed `s` depends only on `s + k`, so a failure is reproduced from its
 //! seed alone (`dvf sweep --seed S+k --count 1 --write DIR`).
 //!
+//! Any parameter, the step, the duration and the area can be set for every scenario
+//! ([`set`]), or varied over a grid of points ([`Axis`], [`points`]), each point a group of
+//! the summary ([`sweep_points`], [`Summaries`]).
+//!
 //! A sweep can be split across processes or machines: each shard writes one [`Outcome`] per
-//! scenario (a JSON line), and [`Summary::of`] summarises any set of outcomes that covers the
-//! seeds once, in the same arithmetic as an unsharded [`sweep`], so N shards merge to exactly
-//! the summary of one run.
+//! scenario (a JSON line that names its [`Sweep`]), and [`Merge`] checks that a set of lines
+//! is one whole sweep and summarises it with [`Summary::of`], in the same arithmetic as an
+//! unsharded [`sweep`], so N shards merge to exactly the summary of one run.
 //!
 //! - `recipe.rs`: what a family draws from ([`Recipe`], [`Family`]);
+//! - `settings.rs`: what the command line sets and varies ([`set`], [`Axis`], [`points`]);
 //! - `generate.rs`: the scenarios themselves ([`scenario`], [`random_scenario`],
 //!   [`formation_scenario`] and its goal [`slots`]);
 //! - `outcome.rs`: one scenario run, as a shard's JSON line records it ([`Outcome`]);
-//! - `summary.rs`: a sweep and its statistics ([`sweep`], [`Summary`], [`Quantiles`]).
+//! - `summary.rs`: a sweep and its statistics ([`sweep`], [`Summary`], [`Quantiles`]);
+//! - `merge.rs`: shards' lines checked and summarised ([`Merge`]).
 
 mod generate;
+mod merge;
 mod outcome;
 mod recipe;
+mod settings;
 mod summary;
 
 pub use generate::{formation_scenario, random_scenario, scenario, slots, Layout};
-pub use outcome::{Outcome, RecipeKey};
+pub use merge::{Merge, MergeError};
+pub use outcome::{Arrival, Closest, Outcome, RecipeKey, Sweep};
 pub use recipe::{Family, Recipe, DT};
-pub use summary::{sweep, Failure, Quantiles, Summary};
+pub use settings::{
+    label, points, set, value_of, with, Axis, Values, MAX_AXIS, MAX_POINTS, RECIPE_NAMES,
+};
+pub use summary::{sweep, sweep_points, Failure, Group, Groups, Quantiles, Summaries, Summary};

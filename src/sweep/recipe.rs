@@ -1,11 +1,13 @@
 //! What a sweep draws from: the family of scenes, the ranges of counts and sizes, the area,
-//! the duration and the method's parameters.
+//! the duration, the step and the method's parameters.
 
+use crate::error::Error;
 use crate::params::Params;
+use crate::scenario::{RobotSpec, Scenario, MAX_MAGNITUDE};
 use serde::{Deserialize, Serialize};
 use std::ops::RangeInclusive;
 
-/// The step of every random scenario (s).
+/// The step of a sweep's scenarios unless the recipe sets another (s).
 pub const DT: f64 = 0.01;
 
 /// The kind of scene a sweep draws.
@@ -23,7 +25,10 @@ pub enum Family {
 }
 
 /// What [`random_scenario`](super::random_scenario) and [`formation_scenario`](super::formation_scenario) draw from.
-#[derive(Clone, Debug, PartialEq)]
+///
+/// It serialises (ranges as `{"start", "end"}`) for the identity of a sweep's shards
+/// ([`super::Sweep::id_of`]): every field is part of what a scenario is drawn from.
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Recipe {
     /// The kind of scene.
     pub family: Family,
@@ -44,13 +49,15 @@ pub struct Recipe {
     pub spacing: RangeInclusive<f64>,
     /// Simulated seconds.
     pub duration: f64,
+    /// The step (s).
+    pub dt: f64,
     /// The method's parameters.
     pub params: Params,
 }
 
 impl Default for Recipe {
     /// 4 to 16 robots and 0 to 5 obstacles (`r_o` 1 … 8, rings 1 … 5 wide) in a 100 × 100
-    /// area, poses `3·safe_radius` apart, 120 s, default parameters.
+    /// area, poses `3·safe_radius` apart, 120 s in steps of [`DT`], default parameters.
     fn default() -> Self {
         Self {
             family: Family::Random,
@@ -62,6 +69,7 @@ impl Default for Recipe {
             ring_width: 1.0..=5.0,
             separation: 3.0,
             duration: 120.0,
+            dt: DT,
             params: Params::default(),
         }
     }
@@ -104,5 +112,39 @@ impl Recipe {
             Family::Formation => Self::formation(),
             Family::Dense => Self::dense(),
         }
+    }
+
+    /// Checks the settings every scenario of the recipe shares (its duration, step and
+    /// parameters) with the scenario file's own checks ([`Scenario::validate`], on a scene of
+    /// one robot with them), so that a value is refused with the file reader's message even
+    /// when no scene can be placed; and the area's side.
+    ///
+    /// # Errors
+    /// The first offending field, named as a scenario file names it (`params.k_a`, `dt`,
+    /// `duration`), or `side`.
+    pub fn check(&self) -> Result<(), Error> {
+        if !(self.side.is_finite() && self.side > 0.0 && self.side <= MAX_MAGNITUDE) {
+            return Err(Error::Invalid {
+                field: "side".into(),
+                message: format!(
+                    "must be a finite number greater than 0 and at most {MAX_MAGNITUDE:e}, not {}",
+                    self.side
+                ),
+            });
+        }
+        Scenario {
+            name: String::new(),
+            bounds: None,
+            duration: self.duration,
+            dt: self.dt,
+            params: self.params,
+            independent: false,
+            robots: vec![RobotSpec {
+                start: [0.0, 0.0, 0.0],
+                goal: [self.side, self.side, 0.0],
+            }],
+            obstacles: Vec::new(),
+        }
+        .validate()
     }
 }

@@ -3,6 +3,7 @@
 
 use super::outcome::Outcome;
 use super::recipe::{Recipe, DT};
+use super::settings::Values;
 use crate::scenario::Scenario;
 use crate::sim::smoothness::{Smoothness, Sums};
 use crate::sim::Report;
@@ -30,8 +31,9 @@ pub struct Summary {
     pub robots: usize,
     /// Robots that converged (within tolerance from some time to the end).
     pub converged: usize,
-    /// `converged / robots`.
-    pub success_rate: f64,
+    /// `converged / robots`; `None` (null) when no scenario ran, so that a sweep of nothing
+    /// never reads as a success.
+    pub success_rate: Option<f64>,
     /// Violation events over all scenarios.
     pub violations: usize,
     /// Scenarios whose poses could not be placed (not run).
@@ -102,6 +104,34 @@ pub fn sweep(
     Summary::of(seed, &outcomes)
 }
 
+/// [`sweep`] at each point of a grid: `points` are the points' values and recipes, in the
+/// grid's order (one point without values: a sweep without a grid, summarised as one).
+/// `on_report` sees each run with its point's values.
+pub fn sweep_points(
+    points: &[(Values, Recipe)],
+    seed: u64,
+    count: usize,
+    on_report: impl Fn(&Values, u64, &Scenario, &Report) + Sync,
+) -> Summaries {
+    let run = |(values, recipe): &(Values, Recipe)| {
+        sweep(recipe, seed, count, |s, scenario, report| {
+            on_report(values, s, scenario, report);
+        })
+    };
+    match points {
+        [point] if point.0.is_empty() => Summaries::One(run(point)),
+        _ => Summaries::Grid(Groups {
+            groups: points
+                .iter()
+                .map(|point| Group {
+                    values: point.0.clone(),
+                    summary: run(point),
+                })
+                .collect(),
+        }),
+    }
+}
+
 impl Summary {
     /// The summary of `outcomes`, in seed order from `seed` (the first): what [`sweep`] prints
     /// for the same scenarios, however they were split and in whatever order they arrive.
@@ -116,17 +146,20 @@ impl Summary {
         let mut times = Vec::new();
         let mut failures = Vec::new();
         let mut smooth = Sums::default();
+        // Every scenario of a sweep (or of a grid point) has the recipe's step.
+        let dt = outcomes.first().map_or(DT, |o| o.dt);
         for o in &outcomes {
             if o.skipped {
                 skipped += 1;
                 continue;
             }
-            let unconverged = o.robots - o.converged_steps.len();
-            robots += o.robots;
-            converged += o.converged_steps.len();
+            let arrived = o.arrival_steps().count();
+            let unconverged = o.robots.len() - arrived;
+            robots += o.robots.len();
+            converged += arrived;
             violations += o.violations;
             smooth.merge(&o.smoothness);
-            times.extend(o.converged_steps.iter().map(|&k| k as f64 * DT));
+            times.extend(o.arrival_steps().map(|k| k as f64 * dt));
             if unconverged > 0 || o.violations > 0 {
                 failures.push(Failure {
                     seed: o.seed,
@@ -141,16 +174,54 @@ impl Summary {
             scenarios: count - skipped,
             robots,
             converged,
-            success_rate: if robots == 0 {
-                1.0
-            } else {
-                converged as f64 / robots as f64
-            },
+            success_rate: (robots > 0).then(|| converged as f64 / robots as f64),
             violations,
             skipped,
             convergence_time: Quantiles::of(times),
-            smoothness: smooth.smoothness(DT),
+            smoothness: smooth.smoothness(dt),
             failures,
+        }
+    }
+}
+
+/// One point of a grid sweep: its values and the summary of its scenarios.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Group {
+    /// The grid point's values, by name.
+    pub values: Values,
+    /// Its scenarios' summary.
+    #[serde(flatten)]
+    pub summary: Summary,
+}
+
+/// What a sweep over a grid found: one group per point, in the grid's order.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Groups {
+    /// The points' summaries.
+    pub groups: Vec<Group>,
+}
+
+/// A sweep's summary: one, or one per point of its grid.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Summaries {
+    /// A sweep without a grid.
+    One(Summary),
+    /// A sweep over a grid.
+    Grid(Groups),
+}
+
+impl Summaries {
+    /// The summaries with their grid points' values (none without a grid).
+    #[must_use]
+    pub fn all(&self) -> Vec<(Option<&Values>, &Summary)> {
+        match self {
+            Self::One(s) => vec![(None, s)],
+            Self::Grid(g) => g
+                .groups
+                .iter()
+                .map(|g| (Some(&g.values), &g.summary))
+                .collect(),
         }
     }
 }
@@ -174,5 +245,19 @@ mod tests {
             }
         );
         assert_eq!(Quantiles::of(vec![]), Quantiles::default());
+    }
+
+    /// A sweep whose every scenario was skipped has no success rate (null), not 1.
+    #[test]
+    fn a_sweep_of_skipped_scenarios_has_no_success_rate() {
+        let recipe = Recipe {
+            robots: 1000..=1000,
+            ..Recipe::default()
+        };
+        let s = sweep(&recipe, 0, 2, |_, _, _| {});
+        assert_eq!((s.scenarios, s.skipped, s.robots), (0, 2, 0));
+        assert_eq!(s.success_rate, None);
+        let json = serde_json::to_value(&s).unwrap();
+        assert!(json["success_rate"].is_null(), "{json}");
     }
 }

@@ -26,15 +26,16 @@ pub enum Command {
     /// Sample robot I's obstacle-free goal field at its start attitude on an N×N grid.
     Field(FieldArgs),
     /// Run COUNT random scenarios from SEED and print the success rate, the violations and
-    /// the distribution of convergence times (JSON). With `--shard K/N`, run only every
-    /// N-th scenario from the K-th and print one JSON line per scenario instead; `dvf sweep
-    /// merge` combines the shards' lines into the summary of the whole sweep.
+    /// the distribution of convergence times (JSON); with `--grid`, COUNT at each point of
+    /// the grid, one group each. With `--shard K/N`, run only every N-th scenario from the
+    /// K-th and print one JSON line per scenario instead; `dvf sweep merge` checks that the
+    /// shards' lines are one whole sweep and combines them into its summary.
     #[command(args_conflicts_with_subcommands = true)]
     Sweep {
         #[command(subcommand)]
         action: Option<SweepAction>,
         #[command(flatten)]
-        args: SweepArgs,
+        args: Box<SweepArgs>,
     },
     /// Time the simulation of a crowd (N robots swapping across a circle at constant
     /// density, M obstacles on the way) and print
@@ -48,7 +49,8 @@ pub enum Command {
 #[derive(Subcommand)]
 pub enum SweepAction {
     /// Combine the JSON lines of `dvf sweep --shard` runs (files, or standard input when
-    /// none is given) into the summary one unsharded sweep of the same scenarios prints.
+    /// none is given) into the summary one unsharded sweep of the same scenarios prints;
+    /// refuse a set that misses a scenario, has one twice or mixes sweeps.
     Merge {
         /// Files of JSON lines, in any order.
         files: Vec<PathBuf>,
@@ -81,8 +83,9 @@ pub struct FieldArgs {
 // The arguments of `dvf sweep` (without `merge`).
 #[derive(Args)]
 pub struct SweepArgs {
-    /// Run only scenarios K, K + N, K + 2N, … (counted from 1) of the COUNT and print
-    /// one JSON line per scenario (seed, recipe, outcome), for `dvf sweep merge`.
+    /// Run only scenarios K, K + N, K + 2N, … (counted from 1) of the COUNT (of COUNT times
+    /// the grid's points) and print one JSON line per scenario (its sweep, seed, recipe,
+    /// outcome), for `dvf sweep merge`.
     #[arg(long, value_name = "K/N", value_parser = parse_shard)]
     pub shard: Option<(usize, usize)>,
     /// Scenario k uses seed SEED + k, so any failure is rerun with `--seed S --count 1`.
@@ -119,7 +122,17 @@ pub struct SweepArgs {
         allow_hyphen_values = true
     )]
     pub barrier_rate: String,
-    /// Write every failing scenario as DIR/seed-S.json.
+    /// Set NAME to VALUE in every scenario (repeatable): a parameter by its scenario file
+    /// name (k_v, k_omega, k_a, sense_radius, safe_radius, v_max, omega_max, barrier_rate,
+    /// avoidance, …; `none` for no limit), dt, duration, or side (the area's side).
+    #[arg(long = "set", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub set: Vec<String>,
+    /// Run the sweep at each value of NAME (repeatable: at every combination), each point a
+    /// group of the summary: a list `NAME=a,b,c` or a range `NAME=start:stop:step`.
+    #[arg(long = "grid", value_name = "NAME=VALUES", allow_hyphen_values = true)]
+    pub grid: Vec<String>,
+    /// Write every failing scenario as DIR/seed-S.json (with a grid,
+    /// DIR/seed-S-NAME=VALUE,….json).
     #[arg(long, value_name = "DIR")]
     pub write: Option<PathBuf>,
 }

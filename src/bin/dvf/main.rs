@@ -90,7 +90,7 @@ fn run(command: args::Command) -> Result<(), String> {
             action: Some(SweepAction::Merge { files }),
             ..
         } => sweep::merge(&mut out, &files),
-        Command::Sweep { action: None, args } => sweep::run(&mut out, args),
+        Command::Sweep { action: None, args } => sweep::run(&mut out, *args),
         Command::Bench(a) => bench::run(&mut out, &a),
         Command::Presets(a) => presets::run(&mut out, &a),
     }
