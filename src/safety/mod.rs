@@ -32,8 +32,10 @@ use crate::unicycle::{motion, Motion};
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
 
+mod agent;
 mod limits;
 
+pub use agent::Agent;
 pub use limits::{speed_limits, Constraints, SpeedLimits};
 
 /// The barrier holds distances a relative `1e-9` beyond the limits, so that the round-off of

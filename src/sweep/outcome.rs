@@ -80,7 +80,9 @@ impl Outcome {
             smoothness: Sums::default(),
         };
         if let Some(scenario) = scenario(recipe, seed) {
-            let report = sim::run(&scenario);
+            let Ok(report) = sim::run(&scenario) else {
+                return outcome;
+            };
             outcome.skipped = false;
             outcome.robots = report.robots.len();
             outcome.converged_steps = report

@@ -10,11 +10,11 @@ pub fn run(out: &mut impl Write, args: &SimulateArgs) -> Result<(), String> {
     let s = args.source.load()?;
     let report = match &args.csv {
         Some(path) => {
-            let (report, traj) = run_recorded(&s, 1);
+            let (report, traj) = run_recorded(&s, 1).map_err(|e| e.to_string())?;
             write_csv(path, &traj).map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
             report
         }
-        None => dvf::run(&s),
+        None => dvf::run(&s).map_err(|e| e.to_string())?,
     };
     crate::write_json(out, &report)
 }
