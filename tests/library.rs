@@ -1,12 +1,18 @@
 //! The library's entry points, as a program that uses it sees them: every entry that takes a
 //! scenario refuses what the file reader refuses, with its message; a scenario can be built in
 //! code; one robot can be stepped with the barrier from one's own loop, with the simulator's
-//! bits.
+//! bits. They run natively, in Node (`wasm-pack test --node`) and in Chromium
+//! (`make test-browser`).
+
+#[path = "../src/testing.rs"]
+mod testing;
+use testing::test;
 
 use dvf::presets::{circle_swap, preset};
 use dvf::scenario::Scenario;
 use dvf::sim::{run, run_recorded, run_streamed, run_with, step_time, Neighbourhood, Simulation};
-use dvf::{Agent, Error, Params, Pose};
+use dvf::{Agent, Error, Obstacle, Params, Pose};
+use glam::DVec2;
 
 /// A one-robot scene as JSON with `extra` keys.
 fn json_with(extra: &str) -> String {
@@ -267,4 +273,38 @@ fn an_agent_refuses_a_step_or_pose_the_validation_refuses() {
         "robots[0].start[0]: must be a finite number, not NaN"
     );
     assert!(err(0.5, a).starts_with("dt: must be at most"));
+}
+
+/// The in-place edits of a new simulation refuse, changing nothing, the numbers the
+/// validation refuses; a new simulation of the edited scenario then names the field.
+#[test]
+fn placing_a_robot_or_obstacle_refuses_numbers_the_validation_refuses() {
+    let s = preset("table2-obstacles").unwrap();
+    let mut sim = Simulation::new(&s).unwrap();
+    let before = sim.robots().to_vec();
+    let (pose, goal) = (s.robots[0].start_pose(), s.robots[0].goal_pose());
+    let nan = Pose::new(f64::NAN, 0.0, 0.0);
+    assert!(!sim.place_robot(0, nan, goal));
+    assert!(!sim.place_robot(0, pose, Pose::new(0.0, 1e7, 0.0)));
+    let obstacle = s.obstacles[0];
+    for bad in [
+        Obstacle {
+            radius: 0.0,
+            ..obstacle
+        },
+        Obstacle {
+            influence: obstacle.radius,
+            ..obstacle
+        },
+        Obstacle {
+            center: DVec2::new(f64::INFINITY, 0.0),
+            ..obstacle
+        },
+    ] {
+        assert!(!sim.place_obstacle(0, bad));
+    }
+    assert_eq!(sim.robots(), &before[..]);
+    assert_eq!(sim.obstacles(), &s.obstacles[..]);
+    // A valid edit is taken.
+    assert!(sim.place_robot(0, Pose::new(1.0, 30.0, 0.0), goal));
 }
