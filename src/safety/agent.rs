@@ -23,7 +23,7 @@ use glam::DVec2;
 ///
 /// Stepped from the same snapshot with the neighbours in scenario order, an agent takes the
 /// very steps (the same bits) that [`crate::sim::Simulation`] takes for its robot
-/// (`tests/safety.rs`).
+/// (`tests/library.rs`).
 ///
 /// ```
 /// use dvf::swarm::Neighbour;

@@ -20,7 +20,11 @@ pub fn run(out: &mut impl Write, args: &SimulateArgs) -> Result<(), String> {
         Some(path) => Some(Csv::create(path)?),
         None => None,
     };
-    let every = usize::try_from(args.every).unwrap_or(usize::MAX);
+    // Without a CSV only the first and last steps are sampled, which nothing reads.
+    let every = match csv {
+        Some(_) => usize::try_from(args.every).unwrap_or(usize::MAX),
+        None => usize::MAX,
+    };
     let bar = progress(s.steps());
     let report = run_streamed(&s, every, |sim: &Simulation, samples: &[Sample]| {
         bar.set_position(sim.steps() as u64);
