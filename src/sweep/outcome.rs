@@ -80,6 +80,8 @@ impl Outcome {
             smoothness: Sums::default(),
         };
         if let Some(scenario) = scenario(recipe, seed) {
+            // A generated scenario passes its checks (`generate.rs`); one that did not would
+            // count as skipped.
             let Ok(report) = sim::run(&scenario) else {
                 return outcome;
             };
