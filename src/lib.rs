@@ -57,8 +57,9 @@
 //! - [`swarm`]: collision avoidance among robots through a virtual obstacle (Section V);
 //! - [`controller`]: the controllers that turn the field into `(v, ω)` (Sections III to V);
 //! - [`unicycle`]: the unicycle's kinematics, integrated over a step;
-//! - [`safety`]: the safety barrier on the forward speed (not in the paper), and [`Agent`]:
-//!   one robot under the controller and the barrier, stepped from one's own loop.
+//! - [`safety`]: the safety barrier on the forward speed (not in the paper), and
+//!   [`SafeRobot`]: one robot under the controller and the barrier, stepped from one's own
+//!   loop.
 //!
 //! Scenes and their runs:
 //! - [`params`]: the method's parameters and their defaults;
@@ -128,7 +129,7 @@ pub use controller::{command, Command};
 pub use error::Error;
 pub use obstacle::Obstacle;
 pub use params::Params;
-pub use safety::Agent;
+pub use safety::SafeRobot;
 pub use scenario::Scenario;
 pub use se2::Pose;
 pub use sim::{run, Neighbourhood, Report, Simulation};

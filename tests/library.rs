@@ -11,7 +11,7 @@ use testing::test;
 use dvf::presets::{circle_swap, preset};
 use dvf::scenario::Scenario;
 use dvf::sim::{run, run_recorded, run_streamed, run_with, step_time, Neighbourhood, Simulation};
-use dvf::{Agent, Error, Obstacle, Params, Pose};
+use dvf::{Error, Obstacle, Params, Pose, SafeRobot};
 use glam::DVec2;
 
 /// A one-robot scene as JSON with `extra` keys.
@@ -194,18 +194,18 @@ fn streamed_samples_are_the_recorded_ones() {
     assert_eq!(times, expected);
 }
 
-/// Agents stepped from the same snapshot, each sensing the others in scenario order, take the
+/// Safe robots stepped from the same snapshot, each sensing the others in scenario order, take the
 /// simulator's very steps: every pose and command the same bits, at every step.
-fn agents_take_the_simulators_steps(s: &Scenario) {
+fn safe_robots_take_the_simulators_steps(s: &Scenario) {
     let mut sim = Simulation::new(s).unwrap();
-    let mut agents: Vec<Agent> = s
+    let mut robots: Vec<SafeRobot> = s
         .robots
         .iter()
-        .map(|r| Agent::new(&s.params, s.dt, r.start_pose(), r.goal_pose()).unwrap())
+        .map(|r| SafeRobot::new(&s.params, s.dt, r.start_pose(), r.goal_pose()).unwrap())
         .collect();
     for step in 1..=s.steps() {
-        let snapshot: Vec<_> = agents.iter().map(Agent::as_neighbour).collect();
-        let commands: Vec<_> = agents
+        let snapshot: Vec<_> = robots.iter().map(SafeRobot::as_neighbour).collect();
+        let commands: Vec<_> = robots
             .iter_mut()
             .enumerate()
             .map(|(i, a)| {
@@ -220,7 +220,7 @@ fn agents_take_the_simulators_steps(s: &Scenario) {
             .collect();
         let held: Vec<_> = sim.robots().iter().map(|r| r.last.command).collect();
         sim.step();
-        for (i, (a, r)) in agents.iter().zip(sim.robots()).enumerate() {
+        for (i, (a, r)) in robots.iter().zip(sim.robots()).enumerate() {
             let (ours, theirs) = (a.pose().to_array(), r.pose.to_array());
             assert_eq!(
                 ours.map(f64::to_bits),
@@ -236,18 +236,18 @@ fn agents_take_the_simulators_steps(s: &Scenario) {
 }
 
 #[test]
-fn one_agent_with_an_obstacle_takes_the_simulators_steps() {
+fn one_safe_robot_with_an_obstacle_takes_the_simulators_steps() {
     let s = Scenario::builder()
         .robot([0.0, 30.0, 0.0], [0.0, 0.0, 0.0])
         .obstacle([-9.2, 14.0], 1.5, 3.0)
         .duration(20.0)
         .build()
         .unwrap();
-    agents_take_the_simulators_steps(&s);
+    safe_robots_take_the_simulators_steps(&s);
 }
 
 #[test]
-fn agents_that_meet_take_the_simulators_steps() {
+fn safe_robots_that_meet_take_the_simulators_steps() {
     // Two robots head-on past an obstacle, and the paper's circle swap of six.
     let pair = Scenario::builder()
         .robot([0.0, 0.0, 0.0], [10.0, 0.0, 0.0])
@@ -256,16 +256,16 @@ fn agents_that_meet_take_the_simulators_steps() {
         .duration(30.0)
         .build()
         .unwrap();
-    agents_take_the_simulators_steps(&pair);
-    agents_take_the_simulators_steps(&circle_swap(6, 20.0));
+    safe_robots_take_the_simulators_steps(&pair);
+    safe_robots_take_the_simulators_steps(&circle_swap(6, 20.0));
 }
 
-/// An agent refuses what a scenario of its one robot would be refused for.
+/// A safe robot refuses what a scenario of its one robot would be refused for.
 #[test]
-fn an_agent_refuses_a_step_or_pose_the_validation_refuses() {
+fn a_safe_robot_refuses_a_step_or_pose_the_validation_refuses() {
     let p = Params::default();
     let (a, b) = (Pose::new(0.0, 0.0, 0.0), Pose::new(1.0, 0.0, 0.0));
-    let err = |dt: f64, start: Pose| Agent::new(&p, dt, start, b).unwrap_err().to_string();
+    let err = |dt: f64, start: Pose| SafeRobot::new(&p, dt, start, b).unwrap_err().to_string();
     assert_eq!(err(0.0, a), "dt: must be positive, not 0");
     assert_eq!(err(-0.01, a), "dt: must be positive, not -0.01");
     assert_eq!(

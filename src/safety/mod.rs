@@ -32,11 +32,11 @@ use crate::unicycle::{motion, Motion};
 use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
 
-mod agent;
 mod limits;
+mod robot;
 
-pub use agent::Agent;
 pub use limits::{speed_limits, Constraints, SpeedLimits};
+pub use robot::SafeRobot;
 
 /// The barrier holds distances a relative `1e-9` beyond the limits, so that the round-off of
 /// computing distances (a few ulps) cannot show a robot that slides along a limit as one

@@ -1,4 +1,4 @@
-//! [`Agent`]: one robot driven from the caller's own loop, one step at a time, by the DVF
+//! [`SafeRobot`]: one robot driven from the caller's own loop, one step at a time, by the DVF
 //! controller made safe by the barrier: what [`crate::sim::Simulation`] does for each of its
 //! robots, for a program that keeps its robots itself.
 
@@ -15,23 +15,24 @@ use glam::DVec2;
 
 /// One robot under the DVF controller and the safety barrier, stepped by the caller.
 ///
-/// Each [`Agent::step`] takes what the robot senses (the other robots as [`Neighbour`]s, with
-/// their positions and speeds `|v|`, and the obstacles), evaluates the controller, clamps its
-/// speed by the barrier, and integrates the unicycle exactly over `dt`. It keeps what a
+/// Each [`SafeRobot::step`] takes what the robot senses (the other robots as [`Neighbour`]s,
+/// with their positions and speeds `|v|`, and the obstacles), evaluates the controller, clamps
+/// its speed by the barrier, and integrates the unicycle exactly over `dt`. It keeps what a
 /// simulation keeps of a robot from step to step: its heading error on a continued branch
 /// ([`continue_branch`]), its heading as the last step left it, and its own speed.
 ///
-/// Stepped from the same snapshot with the neighbours in scenario order, an agent takes the
-/// very steps (the same bits) that [`crate::sim::Simulation`] takes for its robot
+/// Stepped from the same snapshot with the neighbours in scenario order, a `SafeRobot` takes
+/// the very steps (the same bits) that [`crate::sim::Simulation`] takes for its robot
 /// (`tests/library.rs`).
 ///
 /// ```
 /// use dvf::swarm::Neighbour;
-/// use dvf::{Agent, Params, Pose};
+/// use dvf::{Params, Pose, SafeRobot};
 /// use glam::DVec2;
 ///
 /// let params = Params::default();
-/// let mut robot = Agent::new(&params, 0.01, Pose::new(0.0, 0.0, 0.0), Pose::new(10.0, 0.0, 0.0))?;
+/// let (start, goal) = (Pose::new(0.0, 0.0, 0.0), Pose::new(10.0, 0.0, 0.0));
+/// let mut robot = SafeRobot::new(&params, 0.01, start, goal)?;
 /// // A robot at rest just outside the safe distance 2·r_ij = 2, in the way.
 /// let other = Neighbour { position: DVec2::new(2.05, 0.0), speed: 0.0, ..Default::default() };
 /// for _ in 0..100 {
@@ -41,7 +42,7 @@ use glam::DVec2;
 /// # Ok::<(), dvf::Error>(())
 /// ```
 #[derive(Clone, Debug)]
-pub struct Agent {
+pub struct SafeRobot {
     params: Params,
     dt: f64,
     pose: Pose,
@@ -60,7 +61,7 @@ pub struct Agent {
     near_obstacles: Vec<usize>,
 }
 
-impl Agent {
+impl SafeRobot {
     /// A robot at rest at `start` (heading wrapped into `(−π, π]`) bound for `goal`, under
     /// `params` with step `dt`.
     ///
@@ -104,7 +105,7 @@ impl Agent {
     ///
     /// The robot senses the `neighbours` and the `obstacles` within the sensing radius `R_s`
     /// (`params.sense_radius`; those farther are left out here). A neighbour's `speed` is its
-    /// `|v|` ([`Agent::speed`] of another agent) and places the virtual obstacle between the
+    /// `|v|` ([`SafeRobot::speed`] of another one) and places the virtual obstacle between the
     /// two; its `slowest_near` may stay unknown (`..Default::default()`). The command keeps
     /// the robot at least `2·r_ij` from every neighbour given and out of every obstacle disc,
     /// as long as the neighbours keep their side of the barrier too.
