@@ -74,7 +74,7 @@ fn step(c: &mut Criterion) {
     let mut g = c.benchmark_group("step");
     g.sample_size(10).measurement_time(Duration::from_secs(5));
     for n in SIZES {
-        let sim = Simulation::new(&crowd(n));
+        let sim = Simulation::new(&crowd(n)).unwrap();
         g.throughput(Throughput::Elements(n as u64));
         g.bench_with_input(BenchmarkId::from_parameter(n), &n, |b, _| {
             // Each sample starts from the same state: the crowd at t = 0.

@@ -322,7 +322,7 @@ fn main() {
     let mut lines = Vec::new();
     // One thread each, as ORCA here runs (the threads have their own figure below).
     let serial = |s: &Scenario| {
-        let mut sim = Simulation::new(s);
+        let mut sim = Simulation::new(s).unwrap();
         sim.set_parallel(false);
         sim
     };
@@ -439,7 +439,7 @@ fn main() {
     for _ in 0..3 {
         let mut one = serial(&s);
         let single = time(open, || one.step());
-        let mut many = Simulation::new(&s);
+        let mut many = Simulation::new(&s).unwrap();
         let parallel = time(open, || many.step());
         let line = format!(
             r#"{{"robots": {n}, "phase": "open, threads", "threads": {}, "dvf_ms_per_step_one_thread": {single:.4}, "dvf_ms_per_step": {parallel:.4}, "threads_over_one": {:.3}}}"#,

@@ -13,20 +13,21 @@
 //! ## A first run
 //!
 //! A scenario names its robots' starts and goals, its obstacles and the method's parameters;
-//! [`run()`] simulates it to its end and returns a [`Report`]. The paper's examples are
+//! [`run()`] checks it as the file reader does and simulates it to its end, returning a
+//! [`Report`]. The paper's examples are
 //! built in ([`presets`]):
 //!
 //! ```
 //! let scenario = dvf::presets::preset("table1-free-space")?;
-//! let report = dvf::run(&scenario);
+//! let report = dvf::run(&scenario)?;
 //! // Every robot reached its goal pose and stayed there, and no two robots overlapped.
 //! assert!(report.robots.iter().all(|r| r.converged_at.is_some()));
 //! assert_eq!(report.violations, 0);
 //! # Ok::<(), dvf::Error>(())
 //! ```
 //!
-//! A scenario of one's own is JSON (the format is [`scenario`]'s), checked as it is read; a
-//! [`Simulation`] runs it step by step:
+//! A scenario of one's own is JSON (the format is [`scenario`]'s) or built in code
+//! ([`Scenario::builder`]), checked either way; a [`Simulation`] runs it step by step:
 //!
 //! ```
 //! let scenario = dvf::Scenario::from_json(
@@ -35,7 +36,7 @@
 //!                      { "start": [10, 0, 3.14159], "goal": [0, 0, 3.14159] } ],
 //!          "obstacles": [ { "center": [5, 4], "radius": 1, "influence": 2 } ] }"#,
 //! )?;
-//! let mut sim = dvf::Simulation::new(&scenario);
+//! let mut sim = dvf::Simulation::new(&scenario)?;
 //! while sim.time() < 30.0 {
 //!     sim.step();
 //! }
@@ -56,7 +57,9 @@
 //! - [`swarm`]: collision avoidance among robots through a virtual obstacle (Section V);
 //! - [`controller`]: the controllers that turn the field into `(v, ω)` (Sections III to V);
 //! - [`unicycle`]: the unicycle's kinematics, integrated over a step;
-//! - [`safety`]: the safety barrier on the forward speed (not in the paper).
+//! - [`safety`]: the safety barrier on the forward speed (not in the paper), and
+//!   [`SafeRobot`]: one robot under the controller and the barrier, stepped from one's own
+//!   loop.
 //!
 //! Scenes and their runs:
 //! - [`params`]: the method's parameters and their defaults;
@@ -126,6 +129,7 @@ pub use controller::{command, Command};
 pub use error::Error;
 pub use obstacle::Obstacle;
 pub use params::Params;
+pub use safety::SafeRobot;
 pub use scenario::Scenario;
 pub use se2::Pose;
 pub use sim::{run, Neighbourhood, Report, Simulation};

@@ -14,6 +14,10 @@
 //! checks, the whole-scenario check beside the per-robot and per-obstacle ones that edits use;
 //! the parameters are checked from their table ([`crate::params::PARAMETERS`]).
 
+mod builder;
+
+pub use builder::ScenarioBuilder;
+
 use crate::error::Error;
 use crate::obstacle::Obstacle;
 use crate::params::{Params, Slot, PARAMETERS};

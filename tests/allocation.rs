@@ -71,7 +71,7 @@ fn steps_allocate_nothing() {
             Neighbourhood::Grid,
         ),
     ] {
-        let mut sim = Simulation::with_neighbourhood(&s, way);
+        let mut sim = Simulation::with_neighbourhood(&s, way).unwrap();
         // One thread: the wasm build's step (the parallel one is below).
         sim.set_parallel(false);
         sim.step();
@@ -92,7 +92,7 @@ fn steps_allocate_nothing() {
 #[test]
 fn growing_lists_allocate_rarely() {
     let s = crowd(1000);
-    let mut sim = Simulation::new(&s);
+    let mut sim = Simulation::new(&s).unwrap();
     sim.set_parallel(false);
     let n = allocations(|| {
         for _ in 0..1000 {
@@ -114,7 +114,7 @@ fn parallel_steps_allocate_rarely() {
         .build()
         .unwrap();
     // Above the size from which a step runs on threads.
-    let mut sim = Simulation::new(&crowd(dvf::sim::PARALLEL_FROM + 100));
+    let mut sim = Simulation::new(&crowd(dvf::sim::PARALLEL_FROM + 100)).unwrap();
     two.install(|| sim.step());
     sim.reserve_neighbours(2.0);
     let n = two.install(|| {

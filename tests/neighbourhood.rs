@@ -39,8 +39,8 @@ fn bits(r: &Robot) -> Vec<u64> {
 /// Runs `s` for at most `steps` steps both ways and asserts the same bits at every step and
 /// the same report.
 fn same_bits(s: &Scenario, steps: usize) {
-    let mut grid = Simulation::with_neighbourhood(s, Neighbourhood::Grid);
-    let mut all = Simulation::with_neighbourhood(s, Neighbourhood::AllPairs);
+    let mut grid = Simulation::with_neighbourhood(s, Neighbourhood::Grid).unwrap();
+    let mut all = Simulation::with_neighbourhood(s, Neighbourhood::AllPairs).unwrap();
     for k in 0..=steps.min(s.steps()) {
         if k > 0 {
             grid.step();
@@ -93,7 +93,7 @@ fn short_sensing_and_violations_give_the_same_bits() {
     s.params.sense_radius = 2.5;
     s.params.barrier_rate = None;
     s.duration = 30.0;
-    let r = dvf::run(&s);
+    let r = dvf::run(&s).unwrap();
     assert!(r.violations > 0, "the scenario should violate: {r:?}");
     same_bits(&s, usize::MAX);
 }
@@ -133,7 +133,7 @@ fn obstacle_fields_give_the_same_bits() {
                           {"center": [300, 300], "radius": 1, "influence": 2}]}"#,
     )
     .unwrap();
-    let r = dvf::run(&thin);
+    let r = dvf::run(&thin).unwrap();
     assert!(r.violations >= 3, "every robot should enter a disc: {r:?}");
     same_bits(&thin, usize::MAX);
     // An obstacle larger than the cells allow is listed everywhere.
@@ -161,11 +161,11 @@ fn threads_give_the_same_bits() {
             .unwrap()
     };
     let (one, two) = (pool(1), pool(2));
-    let mut a = Simulation::new(&s);
-    let mut b = Simulation::new(&s);
-    let mut c = Simulation::new(&s);
+    let mut a = Simulation::new(&s).unwrap();
+    let mut b = Simulation::new(&s).unwrap();
+    let mut c = Simulation::new(&s).unwrap();
     c.set_parallel(false);
-    let mut d = Simulation::new(&s);
+    let mut d = Simulation::new(&s).unwrap();
     for k in 1..=400 {
         one.install(|| a.step());
         two.install(|| b.step());

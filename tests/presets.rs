@@ -17,7 +17,7 @@ use dvf::sim::{run, run_recorded};
 fn every_preset_reaches_its_goals_without_violation() {
     for p in PRESETS {
         let s = p.scenario();
-        let r = run(&s);
+        let r = run(&s).unwrap();
         assert_eq!(r.violations, 0, "{}: {} violations", p.name, r.violations);
         for (k, robot) in r.robots.iter().enumerate() {
             assert!(
@@ -51,7 +51,7 @@ fn table1_within_a_hundredth() {
     let s = preset("table1-free-space").unwrap();
     assert_eq!((s.duration, s.dt), (60.0, 0.01));
     assert_eq!(s.params, dvf::Params::default());
-    let r = run(&s);
+    let r = run(&s).unwrap();
     for (k, robot) in r.robots.iter().enumerate() {
         assert!(
             robot.position_error <= 1e-2,
@@ -76,7 +76,7 @@ fn table2_obstacles_block_the_free_paths() {
     let obstacles = s.obstacles.clone();
     assert_eq!(obstacles.len(), TABLE2_OBSTACLES.len());
     s.obstacles.clear();
-    let (_, traj) = run_recorded(&s, 1);
+    let (_, traj) = run_recorded(&s, 1).unwrap();
     for (k, samples) in traj.iter().enumerate() {
         let closest = samples
             .iter()
@@ -100,7 +100,7 @@ fn table2_obstacles_block_the_free_paths() {
 fn literal_paper_avoidance_does_not_finish_the_line_swap() {
     let mut s = preset("example3-line-swap").unwrap();
     s.params.avoidance = Avoidance::Paper;
-    let r = run(&s);
+    let r = run(&s).unwrap();
     let unfinished = r.robots.iter().filter(|x| x.converged_at.is_none()).count();
     assert!(
         unfinished > 0,
@@ -119,7 +119,7 @@ fn example4_ends_in_a_line() {
         (s.obstacles[0].radius, s.obstacles[0].influence),
         (5.0, 10.0)
     );
-    let r = run(&s);
+    let r = run(&s).unwrap();
     let x0 = s.robots[0].goal[0];
     for robot in &r.robots {
         assert!((robot.final_pose[0] - x0).abs() <= s.params.tol_position);
@@ -145,7 +145,7 @@ fn every_preset_converges_with_saturated_speeds() {
             s.params.v_max = Some(v_max);
             s.params.omega_max = Some(omega_max);
             s.duration = s.duration.max(SATURATED_RUN_S);
-            let r = run(&s);
+            let r = run(&s).unwrap();
             assert_eq!(r.violations, 0, "{} at v_max {v_max}: violations", p.name);
             let stranded: Vec<usize> = (0..r.robots.len())
                 .filter(|&k| r.robots[k].converged_at.is_none())

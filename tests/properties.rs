@@ -74,7 +74,7 @@ fn random_pairs(seed: u64, pairs: usize, params: Params) -> Stats {
         };
         s.validate().expect("a valid scenario");
         assert_eq!(s.steps(), 6000);
-        let mut sim = Simulation::new(&s);
+        let mut sim = Simulation::new(&s).unwrap();
         for step in 1..=s.steps() {
             sim.step();
             for (i, r) in sim.robots().iter().enumerate() {
@@ -250,7 +250,7 @@ fn random_obstacle_fields_never_produce_non_finite_states() {
             obstacles: f.obstacles.clone(),
         };
         prop_assert!(s.validate().is_ok(), "{:?}", s.validate());
-        let mut sim = Simulation::new(&s);
+        let mut sim = Simulation::new(&s).unwrap();
         for step in 1..=s.steps() {
             sim.step();
             let r = sim.robots()[0];
@@ -385,7 +385,7 @@ proptest! {
     #[test]
     fn the_step_never_panics_nor_leaves_finite_numbers(s in any_state()) {
         prop_assume!(s.validate().is_ok());
-        let mut sim = Simulation::new(&s);
+        let mut sim = Simulation::new(&s).unwrap();
         for _ in 0..s.steps() {
             sim.step();
             for r in sim.robots() {

@@ -36,7 +36,7 @@ fn antipodal_circle_swaps_of_2_to_24_robots_all_arrive() {
     for radius in [12.0, 20.0, 30.0] {
         for n in 2..=24 {
             let s = circle_swap(n, radius);
-            assert_kept(&s.name, &run(&s));
+            assert_kept(&s.name, &run(&s).unwrap());
         }
     }
 }
@@ -47,7 +47,7 @@ fn line_swaps_of_2_to_10_robots_all_arrive() {
     for spacing in [10.0, 5.0] {
         for n in 2..=10 {
             let s = line_swap(n, spacing);
-            assert_kept(&s.name, &run(&s));
+            assert_kept(&s.name, &run(&s).unwrap());
         }
     }
 }
@@ -92,7 +92,7 @@ fn step_sizes_from_a_millisecond_to_the_limit_converge() {
             s.duration = s.duration.max(40.0);
             s.validate()
                 .unwrap_or_else(|e| panic!("{} at dt {dt}: {e}", p.name));
-            assert_kept(&format!("{} at dt {dt}", p.name), &run(&s));
+            assert_kept(&format!("{} at dt {dt}", p.name), &run(&s).unwrap());
         }
     }
     let mut s = preset("example4-obstacle-formation").unwrap();
@@ -196,9 +196,9 @@ fn a_goal_in_the_transition_band_is_reached() {
     })
     .to_string();
     let s = Scenario::from_json(&text).unwrap();
-    assert_kept("goal in the band", &run(&s));
+    assert_kept("goal in the band", &run(&s).unwrap());
     let mut paper = s.clone();
     paper.params.avoidance = dvf::params::Avoidance::Paper;
-    let r = run(&paper);
+    let r = run(&paper).unwrap();
     assert!(r.robots[0].heading_error > 1.0, "{:?}", r.robots[0]);
 }

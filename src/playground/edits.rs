@@ -324,7 +324,7 @@ impl Live {
         }
         let steps = self.steps();
         let n = scenario.robots.len();
-        self.sim = Simulation::new(&from);
+        self.sim = Simulation::of_valid(&from, crate::sim::Neighbourhood::Grid);
         self.base_time = time;
         self.base_steps = steps;
         self.scenario = scenario;

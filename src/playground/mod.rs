@@ -102,7 +102,7 @@ impl Live {
     /// more than [`MAX_LIVE_STEPS`] steps.
     pub fn new(scenario: Scenario) -> Result<Self, Error> {
         edits::check(&scenario)?;
-        let sim = Simulation::new(&scenario);
+        let sim = Simulation::of_valid(&scenario, crate::sim::Neighbourhood::Grid);
         let mut live = Self {
             record_every: 1,
             scenario,
@@ -158,7 +158,7 @@ impl Live {
 
     /// Back to `t = 0` at the scenario's starts; clears the trails.
     pub fn reset(&mut self) {
-        self.sim = Simulation::new(&self.scenario);
+        self.sim = Simulation::of_valid(&self.scenario, crate::sim::Neighbourhood::Grid);
         self.start();
     }
 

@@ -33,8 +33,10 @@ use glam::DVec2;
 use std::f64::consts::FRAC_PI_2;
 
 mod limits;
+mod robot;
 
 pub use limits::{speed_limits, Constraints, SpeedLimits};
+pub use robot::SafeRobot;
 
 /// The barrier holds distances a relative `1e-9` beyond the limits, so that the round-off of
 /// computing distances (a few ulps) cannot show a robot that slides along a limit as one

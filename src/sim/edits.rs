@@ -4,6 +4,7 @@
 
 use super::{Robot, Simulation};
 use crate::obstacle::Obstacle;
+use crate::scenario::MAX_MAGNITUDE;
 use crate::se2::{heading, Pose};
 use glam::DVec2;
 
@@ -15,10 +16,13 @@ impl Simulation {
     /// playground's drags go through here.
     ///
     /// Returns `false`, changing nothing, once a step has been taken (the snapshot speeds are
-    /// then no longer those of a new simulation) or for an index out of range: build a new
-    /// simulation then.
+    /// then no longer those of a new simulation), for an index out of range, or for a pose or
+    /// goal with a coordinate the validation refuses (not finite, or beyond
+    /// [`MAX_MAGNITUDE`]): build a new simulation then, which names the field.
     pub fn place_robot(&mut self, i: usize, pose: Pose, goal: Pose) -> bool {
-        if self.steps != 0 || i >= self.robots.len() {
+        let numbers = pose.to_array().into_iter().chain(goal.to_array());
+        let valid = numbers.clone().all(in_range);
+        if self.steps != 0 || i >= self.robots.len() || !valid {
             return false;
         }
         let was = self.robots[i].pose.p;
@@ -47,9 +51,20 @@ impl Simulation {
     /// Replaces obstacle `k` in a simulation that has taken no step yet, with the same bits as
     /// [`Simulation::new`] of the scenario with that obstacle: the robots within `R_s` of its
     /// old or new disc are evaluated again. Returns `false`, changing nothing, once a step has
-    /// been taken or for an index out of range.
+    /// been taken, for an index out of range, or for an obstacle the validation refuses for
+    /// its numbers (not finite or beyond [`MAX_MAGNITUDE`], `radius ≤ 0`, `influence ≤ radius`).
     pub fn place_obstacle(&mut self, k: usize, obstacle: Obstacle) -> bool {
-        if self.steps != 0 || k >= self.obstacles.len() {
+        let Obstacle {
+            center,
+            radius,
+            influence,
+        } = obstacle;
+        let valid = [center.x, center.y, radius, influence]
+            .into_iter()
+            .all(in_range)
+            && radius > 0.0
+            && influence > radius;
+        if self.steps != 0 || k >= self.obstacles.len() || !valid {
             return false;
         }
         let was = self.obstacles[k];
@@ -73,4 +88,9 @@ impl Simulation {
         self.metrics.clear();
         self.observe();
     }
+}
+
+/// A coordinate or radius the validation accepts: finite, at most [`MAX_MAGNITUDE`] in size.
+fn in_range(v: f64) -> bool {
+    v.is_finite() && v.abs() <= MAX_MAGNITUDE
 }

@@ -206,7 +206,7 @@ mod tests {
     #[test]
     fn lists_kept_past_half_the_skin_hold_every_pair() {
         let s = crate::presets::crowd(200);
-        let mut sim = Simulation::new(&s);
+        let mut sim = Simulation::new(&s).unwrap();
         let (reach, n) = (sim.reach, sim.robots.len());
         let mut kept = 0;
         // Past the jam at the centre (about 16 s).

@@ -44,9 +44,10 @@ pub mod smoothness;
 
 pub use parallel::PARALLEL_FROM;
 pub use report::{Report, RobotReport};
-pub use run::{run, run_recorded, run_with, Sample};
+pub use run::{run, run_recorded, run_streamed, run_with, step_time, Sample};
 
 use crate::controller::Evaluation;
+use crate::error::Error;
 use crate::grid::{Neighbours, ObstacleCells};
 use crate::obstacle::Obstacle;
 use crate::params::Params;
@@ -169,16 +170,29 @@ pub struct Simulation {
 }
 
 impl Simulation {
-    /// A simulation at time 0 of a (validated) scenario, finding neighbours by a grid.
-    #[must_use]
-    pub fn new(s: &Scenario) -> Self {
+    /// A simulation at time 0 of scenario `s`, finding neighbours by a grid.
+    ///
+    /// # Errors
+    /// A scenario that [`Scenario::validate`] refuses (`dt = 0`, a NaN start, …), with the
+    /// message the file reader gives, naming the field.
+    pub fn new(s: &Scenario) -> Result<Self, Error> {
         Self::with_neighbourhood(s, Neighbourhood::Grid)
     }
 
-    /// A simulation at time 0 of a (validated) scenario, finding neighbours as `neighbourhood`
-    /// says (the result is the same either way).
+    /// A simulation at time 0 of scenario `s`, finding neighbours as `neighbourhood` says (the
+    /// result is the same either way).
+    ///
+    /// # Errors
+    /// As [`Self::new`].
+    pub fn with_neighbourhood(s: &Scenario, neighbourhood: Neighbourhood) -> Result<Self, Error> {
+        s.validate()?;
+        Ok(Self::of_valid(s, neighbourhood))
+    }
+
+    /// [`Self::with_neighbourhood`] of a scenario the caller has validated already (the
+    /// playground checks its edits robot by robot, `Scenario::validate_robot`).
     #[must_use]
-    pub fn with_neighbourhood(s: &Scenario, neighbourhood: Neighbourhood) -> Self {
+    pub(crate) fn of_valid(s: &Scenario, neighbourhood: Neighbourhood) -> Self {
         let robots: Vec<Robot> = s
             .robots
             .iter()
@@ -411,7 +425,7 @@ mod tests {
                 "goal": [43.44229027763088, 63.88736156275513, -1.3015366511357653]}]}"#,
         )
         .unwrap();
-        let mut sim = Simulation::new(&s);
+        let mut sim = Simulation::new(&s).unwrap();
         let field = |sim: &Simulation| {
             let r = sim.robots()[0];
             let err = Pose {
@@ -454,8 +468,8 @@ mod tests {
                 "obstacles":[{"center":[1.5,2],"radius":0.3,"influence":0.8}]}"#,
         )
         .unwrap();
-        let a = run(&s);
-        let b = run(&s);
+        let a = run(&s).unwrap();
+        let b = run(&s).unwrap();
         for (x, y) in a.robots.iter().zip(&b.robots) {
             for k in 0..3 {
                 assert_eq!(x.final_pose[k].to_bits(), y.final_pose[k].to_bits());

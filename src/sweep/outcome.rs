@@ -167,7 +167,14 @@ impl Outcome {
         };
         if let Some(scenario) = scenario(recipe, seed) {
             let mut closest = ClosestPair::default();
-            let report = sim::run_with(&scenario, |s| closest.observe(s.robots()));
+            // A generated scenario passes its checks (`generate.rs`); one that did not would
+            // count as skipped.
+            let Ok(report) = sim::run_with(&scenario, |s| {
+                closest.observe(s.robots());
+                Ok::<(), crate::Error>(())
+            }) else {
+                return outcome;
+            };
             outcome.skipped = false;
             outcome.obstacles = scenario.obstacles.len();
             outcome.robots = report
@@ -309,7 +316,11 @@ mod tests {
         for seed in 0..4 {
             let s = scenario(&recipe, seed).expect("room for eight robots");
             let mut closest = ClosestPair::default();
-            let report = sim::run_with(&s, |sim| closest.observe(sim.robots()));
+            let report = sim::run_with(&s, |sim| {
+                closest.observe(sim.robots());
+                Ok::<(), crate::Error>(())
+            })
+            .unwrap();
             let (i, j, d) = closest.best.expect("eight robots have a closest pair");
             // The same positions and the same distance as the report's metric: exact.
             assert_eq!(Some(d), report.min_pair_distance);
@@ -350,7 +361,11 @@ mod tests {
         for seed in 0..2 {
             let s = scenario(&recipe, seed).expect("room for forty robots");
             let mut closest = ClosestPair::default();
-            let report = sim::run_with(&s, |sim| closest.observe(sim.robots()));
+            let report = sim::run_with(&s, |sim| {
+                closest.observe(sim.robots());
+                Ok::<(), crate::Error>(())
+            })
+            .unwrap();
             assert_eq!(closest.best.map(|c| c.2), report.min_pair_distance);
         }
     }

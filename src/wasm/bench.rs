@@ -28,7 +28,8 @@ impl CrowdBench {
         let robots = whole("robots", robots, MAX_ROBOTS)?.max(1);
         let obstacles = whole("obstacles", obstacles, MAX_OBSTACLES)?;
         Ok(CrowdBench {
-            sim: sim::Simulation::new(&presets::crowd_with_obstacles(robots, obstacles)),
+            sim: sim::Simulation::new(&presets::crowd_with_obstacles(robots, obstacles))
+                .map_err(|e| JsError::new(&e.to_string()))?,
         })
     }
 

@@ -46,7 +46,7 @@ impl Run {
     #[wasm_bindgen(constructor)]
     pub fn new(scenario: JsValue) -> Result<Run, JsError> {
         let s = scenario_from_js(scenario).map_err(js_error)?;
-        Ok(Self::simulate(s))
+        Self::simulate(s)
     }
 
     /// Runs the preset `name`.
@@ -56,7 +56,7 @@ impl Run {
     #[wasm_bindgen(js_name = fromPreset)]
     pub fn from_preset(name: &str) -> Result<Run, JsError> {
         let s = presets::preset(name).map_err(js_error)?;
-        Ok(Self::simulate(s))
+        Self::simulate(s)
     }
 
     /// The scenario's name (free text: show it with `textContent`).
@@ -160,21 +160,20 @@ impl Run {
 
 /// Rust-only helpers.
 impl Run {
-    /// Simulates a validated scenario, keeping at most [`MAX_SAMPLES_PER_ROBOT`] samples per
-    /// robot.
-    fn simulate(scenario: Scenario) -> Run {
+    /// Simulates a scenario, keeping at most [`MAX_SAMPLES_PER_ROBOT`] samples per robot.
+    fn simulate(scenario: Scenario) -> Result<Run, JsError> {
         let every = decimation(scenario.steps(), scenario.robots.len());
-        let (report, traj) = sim::run_recorded(&scenario, every);
+        let (report, traj) = sim::run_recorded(&scenario, every).map_err(js_error)?;
         let samples = traj.first().map_or(0, Vec::len);
         // Every robot is recorded at the same steps, so the rows are equally long.
         debug_assert!(traj.iter().all(|t| t.len() == samples));
         let trajectories = traj.iter().flatten().flat_map(|s: &Sample| *s).collect();
-        Run {
+        Ok(Run {
             scenario,
             report,
             samples,
             trajectories,
-        }
+        })
     }
 }
 

@@ -6,6 +6,7 @@
 use clap::{Args, Parser, Subcommand};
 use dvf::presets::preset;
 use dvf::scenario::Scenario;
+use std::io::Read;
 use std::path::PathBuf;
 
 #[derive(Parser)]
@@ -62,9 +63,13 @@ pub enum SweepAction {
 pub struct SimulateArgs {
     #[command(flatten)]
     pub source: Source,
-    /// Also write the trajectories as CSV (t,robot,x,y,theta,v,omega).
+    /// Also write the trajectories as CSV (t,robot,x,y,theta,v,omega), row by row as the run
+    /// goes; the file is created before the run starts.
     #[arg(long, value_name = "PATH")]
     pub csv: Option<PathBuf>,
+    /// With --csv: keep every K-th step (and the last) rather than every step.
+    #[arg(long, value_name = "K", default_value_t = 1, requires = "csv", value_parser = clap::value_parser!(u64).range(1..))]
+    pub every: u64,
 }
 
 // The arguments of `dvf field`.
@@ -165,7 +170,7 @@ pub struct PresetsArgs {
 /// The scenario a subcommand runs: a file or a preset.
 #[derive(Args)]
 pub struct Source {
-    /// A scenario file (JSON).
+    /// A scenario file (JSON), or `-` for standard input.
     #[arg(
         value_name = "FILE",
         required_unless_present = "preset",
@@ -182,6 +187,13 @@ impl Source {
     pub fn load(&self) -> Result<Scenario, String> {
         match (&self.file, &self.preset) {
             (_, Some(name)) => preset(name).map_err(|e| e.to_string()),
+            (Some(path), None) if path.as_os_str() == "-" => {
+                let mut text = String::new();
+                std::io::stdin()
+                    .read_to_string(&mut text)
+                    .map_err(|e| format!("standard input: cannot read: {e}"))?;
+                Scenario::from_json(&text).map_err(|e| format!("standard input: {e}"))
+            }
             (Some(path), None) => {
                 let text = std::fs::read_to_string(path)
                     .map_err(|e| format!("{}: cannot read: {e}", path.display()))?;

@@ -39,7 +39,7 @@ pub fn run(out: &mut impl Write, args: &BenchArgs) -> Result<(), String> {
     } else {
         Neighbourhood::Grid
     };
-    let mut sim = Simulation::with_neighbourhood(&s, way);
+    let mut sim = Simulation::with_neighbourhood(&s, way).map_err(|e| e.to_string())?;
     let start = std::time::Instant::now();
     for _ in 0..steps {
         sim.step();
