@@ -155,6 +155,27 @@ export function csvSize(scenario) {
  * @param {{progress?: (fraction: number) => void, signal?: AbortSignal}} [options]
  * @returns {Promise<string[] | null>}
  */
+/**
+ * The time of step `steps` of size `dt` as `dvf simulate --csv` writes it (src/sim/run.rs,
+ * `step_time`): `dt`'s shortest decimal `m / 10^d` times `steps`, with `m` and `10^d` exact, so
+ * that one rounding gives the nearest number to the decimal (`0.35`, not the binary product's
+ * `0.35000000000000003`). A `dt` that has no such decimal gets the binary product.
+ */
+export function stepTime(steps, dt) {
+  const EXACT = 2 ** 53;
+  let scale = 1;
+  for (let d = 0; d <= 22; d++) {
+    const m = Math.round(dt * scale);
+    if (m > EXACT) break;
+    if (m / scale === dt) {
+      const units = steps * m;
+      return units <= EXACT ? units / scale : steps * dt;
+    }
+    scale *= 10;
+  }
+  return steps * dt;
+}
+
 export async function trajectoriesCsv(scenario, { progress = () => {}, signal } = {}) {
   const { memory } = await wasmReady();
   const pg = new Playground(scenario);
@@ -178,7 +199,7 @@ export async function trajectoriesCsv(scenario, { progress = () => {}, signal } 
           pg.step(1);
           if (poses.buffer !== memory.buffer || poses.length === 0) views();
         }
-        const t = pg.time;
+        const t = stepTime(k, pg.dt);
         for (let i = 0; i < n; i++) {
           const o = i * POSE_STRIDE;
           const q = i * STATUS_STRIDE;
