@@ -239,9 +239,14 @@ export class Input {
 
   keyDown(e) {
     const c = this.c;
+    if (e.defaultPrevented) return;
+    // Escape ends a seek under way, wherever the focus is (the scrubber that started it
+    // included) and in every mode; the progress bar's Cancel does the same.
+    const endsSeek = e.key === 'Escape' && c.clock.seeking();
+    if (endsSeek) c.clock.cancelSeek();
     // A focused field, menu or button keeps the keys it uses.
-    if (e.defaultPrevented || Input.ownsKey(e.composedPath()[0], e)) return;
-    if (this.act(e)) {
+    else if (Input.ownsKey(e.composedPath()[0], e)) return;
+    if (endsSeek || this.act(e)) {
       // A key the figure used is its own: the host page's shortcuts never see it.
       e.preventDefault();
       e.stopPropagation();
