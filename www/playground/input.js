@@ -1,6 +1,7 @@
 // Pointer, wheel and keyboard input on a playground's canvas. Mouse, touch and pen through
 // pointer events: drag a robot, goal, obstacle or handle (one gesture of the controller, its
-// moves coalesced to one per animation frame), drag the background to pan, pinch with two
+// moves coalesced to one per animation frame, each predicting a shorter way ahead until the
+// drag ends: Playground.setDragging), drag the background to pan, pinch with two
 // fingers to zoom; the wheel zooms about the pointer; keys act anywhere inside the element but
 // in a text field (and leave a focused button, menu or box the keys it uses itself), and a key
 // handled here, or known here and ignored in this mode (KNOWN_KEYS), stops here: it never
@@ -106,7 +107,11 @@ export class Input {
       last: { px, py },
       moved: false,
     };
-    if (target.kind !== 'pan') c.gestures.begin();
+    if (target.kind !== 'pan') {
+      c.gestures.begin();
+      // The drag's edits look a shorter way ahead in a scene of many robots; its end, in full.
+      c.pg.setDragging(true);
+    }
     c.canvas.setPointerCapture(e.pointerId);
     c.toolbar.update();
     c.requestDraw();
@@ -142,6 +147,7 @@ export class Input {
     this.drag = null;
     if (c.canvas.hasPointerCapture(e.pointerId)) c.canvas.releasePointerCapture(e.pointerId);
     if (d.kind !== 'pan') {
+      this.endDragging();
       if (d.moved) c.gestures.commit(d.kind);
       else c.gestures.cancel();
     }
@@ -156,7 +162,16 @@ export class Input {
     if (!d) return;
     this.drag = null;
     this.pendingPointer = null;
-    if (d.kind !== 'pan') this.c.gestures.cancel();
+    if (d.kind !== 'pan') {
+      this.c.gestures.cancel();
+      this.endDragging();
+    }
+  }
+
+  /** The drag's end: the prediction its edits shortened is made again in full. */
+  endDragging() {
+    this.c.pg.setDragging(false);
+    this.c.views.refresh();
   }
 
   /** Applies the drag's newest pointer position, if it moved since the last frame. */
