@@ -3,7 +3,8 @@
 // - Layout: the two figures with `controls` (the editor of playground.html, the minimum-distance
 //   figure of examples.html) hold their toolbar, canvas and side panel inside their own box, and
 //   the text after them starts below that box, on a phone (390 × 844), a tablet and a desktop.
-//   Screenshots in test-results/reader-*.png.
+//   Screenshots in test-results/reader-*.png. On the phone, every figure of examples.html (the
+//   readonly ones too) holds its parts inside its box, above its caption.
 // - Keys: a focused figure keeps the keys it knows from mdBook's shortcuts (S opens the search,
 //   ? the help, the arrows go to the next chapter), whether it acts on them or ignores them
 //   (`readonly`); a key it does not know (Tab) still reaches the page.
@@ -122,6 +123,35 @@ await run(async ({ newPage }) => {
         await page.context().close();
       }
     }
+
+    // Every figure of the examples on a phone.
+    const phone = await newPage({ viewport: { width: 390, height: 844 } });
+    await phone.goto(`${base}/examples.html`);
+    const count = await phone.evaluate(() => {
+      const all = document.querySelectorAll('dvf-playground');
+      all.forEach((el, k) => {
+        el.dataset.check = String(k);
+      });
+      return all.length;
+    });
+    const outside = [];
+    for (let k = 0; k < count; k++) {
+      const sel = `dvf-playground[data-check="${k}"]`;
+      await phone.locator(sel).scrollIntoViewIfNeeded();
+      await waitLoaded(phone, sel);
+      const l = await layoutOf(phone, sel);
+      const out = Object.values(l.parts).some(
+        (p) => p.height > 0 && (p.top < l.top - LAYOUT_SLACK_PX || p.bottom > l.bottom + LAYOUT_SLACK_PX),
+      );
+      const over = l.next.some((n) => n.top < l.bottom - LAYOUT_SLACK_PX);
+      if (out || over || (l.overflow === 'visible' && l.spills)) outside.push(k + 1);
+    }
+    check(
+      count > 10 && outside.length === 0,
+      `examples.html at 390×844: each of its ${count} figures holds its parts inside its box, above the text after it${outside.length ? ` (not figures ${outside.join(', ')})` : ''}`,
+    );
+    checkQuiet(phone, 'examples.html at 390×844');
+    await phone.context().close();
 
     // Keys: a readonly figure (examples.html's first), the readonly figure with controls, the
     // editor (playground.html).
