@@ -94,6 +94,8 @@ test-e2e: package docs
 	node tests/e2e/figures.mjs
 	node tests/e2e/recipes.mjs
 	node tests/e2e/book.mjs
+	node tests/e2e/reader.mjs
+	node tests/e2e/crowd.mjs
 	node tests/e2e/instrument.mjs
 
 test: tools lint test-native test-node test-browser test-e2e

@@ -10,6 +10,10 @@ use crate::scenario::{RobotSpec, Scenario};
 use glam::DVec2;
 use std::f64::consts::{FRAC_PI_2, PI};
 
+mod teaching;
+use teaching::{teach_obstacle, teach_one_robot, teach_two_robots};
+pub use teaching::{TEACH_OMEGA_MAX, TEACH_V_MAX};
+
 /// A named preset.
 #[derive(Clone, Copy, Debug)]
 pub struct Preset {
@@ -59,6 +63,22 @@ pub const PRESETS: &[Preset] = &[
         name: "formation-gap-grid",
         summary: "Not in the paper: twelve robots through a gap into a 4 × 3 grid of slots 5 r_ij apart, T = 90 s",
         build: formation_gap_grid,
+    },
+    // Teaching presets: small scenes at speeds a class can follow (TEACH_V_MAX, TEACH_OMEGA_MAX).
+    Preset {
+        name: "teach-one-robot",
+        summary: "Teaching: one robot from (−30, 25, π/2) to (0, 0, 0), the scene of the paper's Fig. 1, at up to 2 m/s and 1 rad/s, T = 60 s",
+        build: teach_one_robot,
+    },
+    Preset {
+        name: "teach-obstacle",
+        summary: "Teaching: one robot drives round an obstacle (r_o = 4, R_o = 8) to the far side, at up to 2 m/s and 1 rad/s, T = 60 s",
+        build: teach_obstacle,
+    },
+    Preset {
+        name: "teach-two-robots",
+        summary: "Teaching: two robots meet head on and pass each other (r_ij = 1), at up to 2 m/s and 1 rad/s, T = 60 s",
+        build: teach_two_robots,
     },
 ];
 

@@ -7,7 +7,7 @@ mod testing;
 use testing::test;
 
 use dvf::params::Avoidance;
-use dvf::presets::{preset, PRESETS, TABLE2_OBSTACLES};
+use dvf::presets::{preset, PRESETS, TABLE2_OBSTACLES, TEACH_OMEGA_MAX, TEACH_V_MAX};
 use dvf::sim::{run, run_recorded};
 
 /// Every preset: every robot ends within the scenario's tolerances (position and heading)
@@ -158,4 +158,49 @@ fn every_preset_converges_with_saturated_speeds() {
             );
         }
     }
+}
+
+/// The teaching presets: every robot arrives (within the tolerances, `converged_at` set) with
+/// no violation, and at no step drives faster than TEACH_V_MAX or turns faster than
+/// TEACH_OMEGA_MAX (the saturation clamps the command: the comparison is exact). The one-robot
+/// preset is the scene of the book's Fig. 1 figures (its file, bounds included).
+#[test]
+fn teaching_presets_arrive_at_readable_speeds() {
+    let teaching: Vec<_> = PRESETS
+        .iter()
+        .filter(|p| p.name.starts_with("teach-"))
+        .collect();
+    assert!(teaching.len() >= 2, "{} teaching presets", teaching.len());
+    for p in teaching {
+        let s = p.scenario();
+        assert!(s.robots.len() <= 2, "{}: a small scene", p.name);
+        assert_eq!(
+            (s.params.v_max, s.params.omega_max),
+            (Some(TEACH_V_MAX), Some(TEACH_OMEGA_MAX))
+        );
+        let (r, traj) = run_recorded(&s, 1);
+        assert_eq!(r.violations, 0, "{}", p.name);
+        for (k, robot) in r.robots.iter().enumerate() {
+            assert!(
+                robot.converged_at.is_some(),
+                "{}: robot {k} did not arrive: {robot:?}",
+                p.name
+            );
+        }
+        for (k, samples) in traj.iter().enumerate() {
+            let v = samples.iter().map(|x| x[4].abs()).fold(0.0, f64::max);
+            let w = samples.iter().map(|x| x[5].abs()).fold(0.0, f64::max);
+            assert!(
+                v <= TEACH_V_MAX && w <= TEACH_OMEGA_MAX,
+                "{}: robot {k} at {v} m/s, {w} rad/s",
+                p.name
+            );
+        }
+    }
+    let file: dvf::Scenario = dvf::Scenario::from_json(include_str!(
+        "../docs/book/src/scenarios/field-one-robot.json"
+    ))
+    .unwrap();
+    let one = preset("teach-one-robot").unwrap();
+    assert_eq!((one.robots, one.bounds), (file.robots, file.bounds));
 }

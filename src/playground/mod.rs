@@ -14,8 +14,9 @@
 //!   its start. After an edit the heading error restarts on its principal branch (the
 //!   continued branch of [`crate::se2::continue_branch`] belongs to the path before the edit).
 //! - Every edit recomputes the predicted paths: a copy of the simulation run from the current
-//!   state towards the scenario's end (within [`PREDICTION_WORK`]), so that the prediction is
-//!   exactly what playing will show.
+//!   state towards the scenario's end (within [`PREDICTION_WORK`], or the shorter
+//!   [`DRAG_PREDICTION_WORK`] while a drag is under way), so that the prediction is exactly
+//!   what playing will show.
 //!
 //! # Buffers (all flat `f64`, robots in scenario order)
 //! - poses `[robots · 3]`: `x, y, θ` now;
@@ -36,7 +37,8 @@ pub mod trails;
 
 pub use field_view::{CURVE_POINTS, CURVE_STRIDE, FIELD_STRIDE, MAX_CURVE_SIDE, MAX_GRID_SIDE};
 pub use prediction::{
-    Prediction, MAX_PREDICTED_ROBOTS, MAX_PREDICTION_STEPS, PREDICTION_SAMPLES, PREDICTION_WORK,
+    Prediction, DRAG_PREDICTION_WORK, MAX_PREDICTED_ROBOTS, MAX_PREDICTION_STEPS,
+    PREDICTION_SAMPLES, PREDICTION_WORK,
 };
 pub use trails::{Trails, MAX_TRAIL_SAMPLES, TRAIL_BUDGET};
 
@@ -83,6 +85,11 @@ pub struct Live {
     status: Vec<f64>,
     trails: Trails,
     prediction: Prediction,
+    /// The robot-steps a prediction may run: [`PREDICTION_WORK`], or
+    /// [`DRAG_PREDICTION_WORK`] during a drag ([`Live::set_dragging`]).
+    prediction_work: usize,
+    /// The prediction shown ran within [`DRAG_PREDICTION_WORK`] only.
+    prediction_short: bool,
     field: Vec<f64>,
     curves: Vec<f64>,
     /// Scratch kept from call to call: the pair distance, the field view's cells and lists.
@@ -113,6 +120,8 @@ impl Live {
             status: Vec::new(),
             trails: Trails::default(),
             prediction: Prediction::default(),
+            prediction_work: PREDICTION_WORK,
+            prediction_short: false,
             field: Vec::new(),
             curves: Vec::new(),
             pairs: PairDistance::default(),
@@ -218,8 +227,25 @@ impl Live {
     /// Runs a copy of the simulation towards the scenario's end (see [`Prediction::run`]).
     pub fn predict(&mut self) {
         let left = self.scenario.steps().saturating_sub(self.steps());
+        let work = self.prediction_work;
         self.prediction
-            .run(&self.sim, left, self.base_time, &mut self.pairs);
+            .run(&self.sim, left, self.base_time, &mut self.pairs, work);
+        self.prediction_short = work < PREDICTION_WORK;
+    }
+
+    /// Says whether a drag is under way. During one, each edit predicts within
+    /// [`DRAG_PREDICTION_WORK`] robot-steps (a shorter look ahead in a scene of many robots,
+    /// so that a pointer move stays within a frame); at its end, a prediction made that way is
+    /// made again within [`PREDICTION_WORK`], and a drag that edited nothing predicts nothing.
+    pub fn set_dragging(&mut self, dragging: bool) {
+        self.prediction_work = if dragging {
+            DRAG_PREDICTION_WORK
+        } else {
+            PREDICTION_WORK
+        };
+        if !dragging && self.prediction_short {
+            self.predict();
+        }
     }
 
     fn robot(&self, index: usize) -> Result<&Robot, Error> {

@@ -16,6 +16,12 @@ pub const MAX_PREDICTED_ROBOTS: usize = 100;
 /// cannot freeze the page. Example 4 (10 robots, 2,500 steps) is predicted to its end; 100
 /// robots look 5,000 steps ahead.
 pub const PREDICTION_WORK: usize = 500_000;
+/// While a drag is under way a prediction runs at most this many robot-steps: at
+/// [`MAX_PREDICTED_ROBOTS`] robots it looks 300 steps ahead, which keeps a pointer move with its
+/// prediction within a frame (`benches/drag.mjs --robots 100`); Example 4 (10 robots, 2,500
+/// steps) is still predicted to its end. The drag's end predicts within [`PREDICTION_WORK`]
+/// again ([`super::Live::set_dragging`]).
+pub const DRAG_PREDICTION_WORK: usize = 30_000;
 /// A predicted path looks at most this many steps ahead.
 pub const MAX_PREDICTION_STEPS: usize = 200_000;
 /// At most this many samples per robot in a predicted path (the current state included).
@@ -34,10 +40,18 @@ pub struct Prediction {
 
 impl Prediction {
     /// Runs a copy of `sim` up to `left` steps ahead (or until every robot has converged, and
-    /// at most [`PREDICTION_WORK`]` / robots` and [`MAX_PREDICTION_STEPS`] steps) and keeps at
-    /// most [`PREDICTION_SAMPLES`] evenly spaced samples of it, their times offset by
-    /// `base_time`. More than [`MAX_PREDICTED_ROBOTS`] robots are not predicted: no samples.
-    pub fn run(&mut self, sim: &Simulation, left: usize, base_time: f64, pairs: &mut PairDistance) {
+    /// at most `work / robots` and [`MAX_PREDICTION_STEPS`] steps: `work` is
+    /// [`PREDICTION_WORK`], or [`DRAG_PREDICTION_WORK`] during a drag) and keeps at most
+    /// [`PREDICTION_SAMPLES`] evenly spaced samples of it, their times offset by `base_time`.
+    /// More than [`MAX_PREDICTED_ROBOTS`] robots are not predicted: no samples.
+    pub fn run(
+        &mut self,
+        sim: &Simulation,
+        left: usize,
+        base_time: f64,
+        pairs: &mut PairDistance,
+        work: usize,
+    ) {
         let n = sim.robots().len();
         self.times.clear();
         self.min_pair.clear();
@@ -47,9 +61,7 @@ impl Prediction {
         if n > MAX_PREDICTED_ROBOTS {
             return;
         }
-        let left = left
-            .min(MAX_PREDICTION_STEPS)
-            .min(PREDICTION_WORK / n.max(1));
+        let left = left.min(MAX_PREDICTION_STEPS).min(work / n.max(1));
         let every = left.div_ceil(PREDICTION_SAMPLES - 1).max(1);
         let mut sim = sim.clone();
         let (times, min_pair, by_time) = (&mut self.times, &mut self.min_pair, &mut self.by_time);

@@ -191,6 +191,34 @@ fn predictions_are_bounded_by_work_and_stop_above_the_robot_limit() {
     assert_eq!(live.poses().len(), (MAX_PREDICTED_ROBOTS + 1) * POSE_STRIDE);
 }
 
+/// During a drag an edit looks DRAG_PREDICTION_WORK / robots steps ahead; the drag's end
+/// predicts within PREDICTION_WORK again, the same bits as a prediction made afresh.
+#[test]
+fn a_drag_predicts_a_shorter_way_and_its_end_in_full() {
+    let s = crate::presets::crowd(MAX_PREDICTED_ROBOTS);
+    let dt = s.dt;
+    let mut live = Live::new(s).unwrap();
+    let last = |live: &Live| live.prediction().times()[live.prediction().samples() - 1];
+    // In full the crowd is predicted to its arrival, past the drag's horizon.
+    let full = last(&live);
+    let drag_horizon = (DRAG_PREDICTION_WORK / MAX_PREDICTED_ROBOTS) as f64 * dt;
+    assert!(full > 2.0 * drag_horizon, "{full} s");
+    live.set_dragging(true);
+    assert_eq!(
+        last(&live),
+        full,
+        "a drag that has not moved keeps the prediction"
+    );
+    let [x, y, theta] = live.scenario().robots[0].start;
+    live.move_robot(0, Pose::new(x - 0.5, y, theta)).unwrap();
+    assert_close!(last(&live), drag_horizon, 1e-9);
+    live.set_dragging(false);
+    assert!(last(&live) > 2.0 * drag_horizon, "{} s", last(&live));
+    let after = live.prediction().poses().to_vec();
+    live.predict();
+    assert_eq!(after, live.prediction().poses());
+}
+
 /// Trails share a fixed budget: fewer samples per robot in a crowd. When an edit changes
 /// the capacity, the newest samples are kept in time order.
 #[test]

@@ -292,6 +292,13 @@ impl Playground {
         self.live.predict();
     }
 
+    /// Says whether a drag is under way: during one, each edit looks a shorter way ahead in a
+    /// scene of many robots; its end predicts in full again (`Live::set_dragging`).
+    #[wasm_bindgen(js_name = setDragging)]
+    pub fn set_dragging(&mut self, dragging: bool) {
+        self.live.set_dragging(dragging);
+    }
+
     /// Simulated time now (s).
     #[wasm_bindgen(getter)]
     #[must_use]

@@ -73,13 +73,16 @@ await run(async ({ base, newPage }) => {
     const after = await page.evaluate((id) => JSON.stringify(document.getElementById(id).scenario()), id);
     check(after === before, `#${id}: a drag on a robot changes nothing`);
   }
-  // Keys: the plain figure steps on S and the page never sees it; a readonly one takes none.
+  // Keys: the plain figure steps on S and the page never sees it, nor A (an editor's key it
+  // ignores); a readonly one acts on none, and keeps those it knows from the page too; a key
+  // neither knows (X) reaches the page.
   await page.evaluate(() => {
     document.getElementById('plain').shadowRoot.querySelector('[data-id="canvas"]').focus();
     window.keysSeen = [];
   });
   await page.keyboard.press('s');
   await page.keyboard.press('a');
+  await page.keyboard.press('x');
   const plainKeys = await page.evaluate(() => ({
     time: document.getElementById('plain').time,
     robots: document.getElementById('plain').scenario().robots.length,
@@ -88,16 +91,20 @@ await run(async ({ base, newPage }) => {
   check(plainKeys.time > 0, `S steps the figure without controls (t = ${plainKeys.time})`);
   check(plainKeys.robots === 5, 'A adds no robot to a figure without controls');
   check(
-    JSON.stringify(plainKeys.seen) === '["a"]',
-    `the key the figure used stops there; the page sees only the other (${plainKeys.seen})`,
+    JSON.stringify(plainKeys.seen) === '["x"]',
+    `the keys the figure knows stop there, used or not; the page sees only the other (${plainKeys.seen})`,
   );
   await page.evaluate(() => {
     document.getElementById('ro').shadowRoot.querySelector('[data-id="canvas"]').focus();
     window.keysSeen = [];
   });
   await page.keyboard.press('s');
+  await page.keyboard.press('x');
   const roKeys = await page.evaluate(() => ({ time: document.getElementById('ro').time, seen: window.keysSeen }));
-  check(roKeys.time === 0 && roKeys.seen.includes('s'), 'a readonly figure takes no key: S reaches the page');
+  check(
+    roKeys.time === 0 && JSON.stringify(roKeys.seen) === '["x"]',
+    `a readonly figure takes no key, and keeps S from the page; X, a key it does not know, reaches it (${roKeys.seen})`,
+  );
   const roButtons = await page.evaluate(() => {
     const root = document.getElementById('ro').shadowRoot;
     const shown = (id) => root.querySelector(`[data-id="${id}"]`).checkVisibility();

@@ -25,7 +25,8 @@ const CROWD_OPTION = 'crowd';
  */
 export function presetLabel({ name, summary }) {
   const head = summary.split(':')[0].trim();
-  const words = name.replace(/^[a-z]+\d+-?/, '').replace(/-/g, ' ');
+  // The name less its family (`example3-`, `teach-`), which the summary's head says.
+  const words = name.replace(/^(?:[a-z]+\d+-?|teach-)/, '').replace(/-/g, ' ');
   return words ? `${head}: ${words}` : head;
 }
 

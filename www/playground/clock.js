@@ -75,6 +75,17 @@ export class Clock {
     this.host.shown();
   }
 
+  /** Whether a seek in slices (seekTo) is under way. */
+  seeking() {
+    return this.host.loop.seeking;
+  }
+
+  /** Ends the seek under way at the step it reached (Escape, the progress bar's Cancel). */
+  cancelSeek() {
+    this.host.loop.cancelSeek();
+    this.host.shown();
+  }
+
   /** Whether the run is at its end: t = duration, or every robot at its goal (the clock stops). */
   atEnd() {
     const pg = this.host.sim();

@@ -42,6 +42,7 @@ import { messageOf } from './message.js';
 import { MessageBox } from './message-box.js';
 import { Painter } from './paint.js';
 import { Recorder } from './record.js';
+import { SeekProgress } from './seek-progress.js';
 import { DEFAULT_THETA0, validViewState, viewStateOf } from './view-state.js';
 import { LiveViews, wasmFailure, wasmReady } from './wasm-views.js';
 
@@ -136,8 +137,10 @@ export class Controller {
         this.toolbar.update();
         this.viewChanged();
       },
+      seekProgress: (progress) => this.seekProgress.show(progress),
       canvases: () => [this.canvas, this.$('plots')],
     });
+    this.seekProgress = new SeekProgress(this.$('seek'), () => this.clock.cancelSeek());
     this.clock = new Clock({
       sim: () => this.pg,
       scenario: () => this.model,

@@ -1,9 +1,11 @@
 // Pointer, wheel and keyboard input on a playground's canvas. Mouse, touch and pen through
 // pointer events: drag a robot, goal, obstacle or handle (one gesture of the controller, its
-// moves coalesced to one per animation frame), drag the background to pan, pinch with two
+// moves coalesced to one per animation frame, each predicting a shorter way ahead until the
+// drag ends: Playground.setDragging), drag the background to pan, pinch with two
 // fingers to zoom; the wheel zooms about the pointer; keys act anywhere inside the element but
 // in a text field (and leave a focused button, menu or box the keys it uses itself), and a key
-// handled here stops here: it never reaches the page.
+// handled here, or known here and ignored in this mode (KNOWN_KEYS), stops here: it never
+// reaches the page's shortcuts.
 
 import { addObstacleInView, addRobotInView, deleteSelection, nudgeSelection } from './actions.js';
 import { hitTest } from './hit.js';
@@ -15,6 +17,18 @@ const KEY_MOVE_FRACTION = 0.02;
 const KEY_TURN_RAD = Math.PI / 36;
 /** The keys of a figure that is not an editor: play, step, reset, fit, zoom and the help. */
 const VIEW_KEYS = [' ', 's', 'S', 'r', 'R', 'f', 'F', '+', '=', '-', '_', '?'];
+/**
+ * Every key the element acts on in some mode or state (the editor's included). One it does not
+ * act on now (a `readonly` figure, a figure that is not an editor, an arrow with nothing
+ * selected) still stops at the element, its default action kept (an arrow scrolls the page):
+ * a book's shortcuts (mdBook's S for search, its arrows for the next chapter) never see it.
+ * Keys it does not know (Tab, Enter, Page Down) and those with Ctrl, Meta or Alt reach the page.
+ */
+const KNOWN_KEYS = new Set([
+  ...VIEW_KEYS,
+  ...['a', 'A', 'o', 'O', 'g', 'G', 'q', 'Q', 'e', 'E', '[', ']', 'Delete', 'Backspace'],
+  ...['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown'],
+]);
 /** Zoom factor per wheel notch or +/- key. */
 const ZOOM_STEP = 1.2;
 
@@ -93,7 +107,11 @@ export class Input {
       last: { px, py },
       moved: false,
     };
-    if (target.kind !== 'pan') c.gestures.begin();
+    if (target.kind !== 'pan') {
+      c.gestures.begin();
+      // The drag's edits look a shorter way ahead in a scene of many robots; its end, in full.
+      c.pg.setDragging(true);
+    }
     c.canvas.setPointerCapture(e.pointerId);
     c.toolbar.update();
     c.requestDraw();
@@ -129,6 +147,7 @@ export class Input {
     this.drag = null;
     if (c.canvas.hasPointerCapture(e.pointerId)) c.canvas.releasePointerCapture(e.pointerId);
     if (d.kind !== 'pan') {
+      this.endDragging();
       if (d.moved) c.gestures.commit(d.kind);
       else c.gestures.cancel();
     }
@@ -143,7 +162,16 @@ export class Input {
     if (!d) return;
     this.drag = null;
     this.pendingPointer = null;
-    if (d.kind !== 'pan') this.c.gestures.cancel();
+    if (d.kind !== 'pan') {
+      this.c.gestures.cancel();
+      this.endDragging();
+    }
+  }
+
+  /** The drag's end: the prediction its edits shortened is made again in full. */
+  endDragging() {
+    this.c.pg.setDragging(false);
+    this.c.views.refresh();
   }
 
   /** Applies the drag's newest pointer position, if it moved since the last frame. */
@@ -226,12 +254,34 @@ export class Input {
 
   keyDown(e) {
     const c = this.c;
-    // A readonly figure takes no key; a focused field, menu or button keeps the keys it uses.
-    if (!c.pg || c.readonly || e.defaultPrevented || Input.ownsKey(e.composedPath()[0], e)) return;
+    if (e.defaultPrevented) return;
+    // Escape ends a seek under way, wherever the focus is (the scrubber that started it
+    // included) and in every mode; the progress bar's Cancel does the same.
+    const endsSeek = e.key === 'Escape' && c.clock.seeking();
+    if (endsSeek) c.clock.cancelSeek();
+    // A focused field, menu or button keeps the keys it uses.
+    else if (Input.ownsKey(e.composedPath()[0], e)) return;
+    if (endsSeek || this.act(e)) {
+      // A key the figure used is its own: the host page's shortcuts never see it.
+      e.preventDefault();
+      e.stopPropagation();
+      c.viewChanged();
+      c.toolbar.update();
+      c.requestDraw();
+    } else if (!e.ctrlKey && !e.metaKey && !e.altKey && KNOWN_KEYS.has(e.key)) {
+      e.stopPropagation();
+    }
+  }
+
+  /** Does what key `e` asks in this mode and state; false when it does nothing. */
+  act(e) {
+    const c = this.c;
     const mod = e.ctrlKey || e.metaKey;
     const key = e.key;
+    // A readonly figure takes no key.
+    if (!c.pg || c.readonly) return false;
     // A figure that is not an editor takes the clock's, the view's and the help's keys only.
-    if (!c.editable && !VIEW_KEYS.includes(key) && !(key === 'Escape' && c.help.shown)) return;
+    if (!c.editable && !VIEW_KEYS.includes(key) && !(key === 'Escape' && c.help.shown)) return false;
     const centre = () => [c.canvas.clientWidth / 2, c.canvas.clientHeight / 2];
     let handled = true;
     if (mod && (key === 'z' || key === 'Z')) {
@@ -262,14 +312,7 @@ export class Input {
     } else if ((key === 'q' || key === 'Q' || key === 'e' || key === 'E') && c.selection) {
       nudgeSelection(c, 0, 0, key.toLowerCase() === 'q' ? KEY_TURN_RAD : -KEY_TURN_RAD);
     } else handled = false;
-    if (handled) {
-      // A key the figure used is its own: the host page's shortcuts never see it.
-      e.preventDefault();
-      e.stopPropagation();
-      c.viewChanged();
-      c.toolbar.update();
-      c.requestDraw();
-    }
+    return handled;
   }
 
   /** Selects the next (`dir` 1) or previous (−1) robot, and inspects it. */

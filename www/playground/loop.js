@@ -16,13 +16,25 @@ const MAX_FRAME_WALL_S = 0.1;
  * slower (the clock says by how much) rather than making every frame longer than the last.
  */
 const STEP_BUDGET_MS = 20;
+/**
+ * A seek's slice: a frame of a seek steps for about this long (ms), under the 100 ms long-task
+ * budget of tests/e2e/bench-browser.mjs, and draws the scene at most every SEEK_DRAW_MS, so
+ * that a long seek runs near the pure stepping rate (benches/seek.mjs) while the page still
+ * takes Escape and the Cancel button between slices (tests/e2e/crowd.mjs cancels one).
+ */
+const SEEK_SLICE_MS = 80;
+/** A seek under way draws the scene this often (ms of wall time); its progress every frame. */
+const SEEK_DRAW_MS = 500;
+/** A seek shows its progress once it has run this long (ms): a short one shows nothing. */
+const SEEK_SHOW_MS = 250;
 /** Frame work times kept for the benchmark (a ring; see `stats`). */
 const WORK_SAMPLES = 600;
 
 /**
  * What the frame loop reads and calls: the simulation; whether the element is in a document;
  * the frame's work (the pending drag, the drawing); the clock (clock.js) it plays; whether to
- * start over at the end; what to tell once the clock stops or a seek ends; the canvases it
+ * start over at the end; what to tell once the clock stops or a seek ends; where a seek shows
+ * its progress (null: none under way, or not yet long enough to show); the canvases it
  * rasterises for the benchmark.
  * @typedef {{
  *   sim: () => import('../pkg/dvf.js').Playground | null,
@@ -33,6 +45,7 @@ const WORK_SAMPLES = 600;
  *   looping: () => boolean,
  *   time: () => number,
  *   settled: () => void,
+ *   seekProgress: (progress: {time: number, target: number, fraction: number} | null) => void,
  *   canvases: () => HTMLCanvasElement[],
  * }} LoopHost
  */
@@ -54,6 +67,10 @@ export class FrameLoop {
     this.frameRequested = false;
     /** @type {number | null} the step count a seek goes to, frame by frame (seekTo) */
     this.seekStep = null;
+    /** The seek under way: the step it started from, when it started and last drew (ms). */
+    this.seekFrom = 0;
+    this.seekStartMs = 0;
+    this.seekDrawnMs = 0;
     /** @type {number | null} when every robot had converged and the clock stopped (s) */
     this.convergedAt = null;
     /** @type {HTMLCanvasElement | null} */
@@ -96,7 +113,27 @@ export class FrameLoop {
     this.convergedAt = null;
     const target = Math.max(0, Math.min(Math.round(pg.duration / pg.dt), Math.round(t / pg.dt)));
     if (target < Math.round(pg.time / pg.dt)) this.host.clock().rewind();
+    // A seek that moves its target (the scrubber dragged on) goes on from where it began.
+    if (this.seekStep == null) {
+      this.seekFrom = Math.round(pg.time / pg.dt);
+      this.seekStartMs = performance.now();
+      this.seekDrawnMs = this.seekStartMs;
+    }
+    this.seekFrom = Math.min(this.seekFrom, Math.round(pg.time / pg.dt));
     this.seekStep = target;
+    this.requestDraw();
+  }
+
+  /** Whether a seek (seekTo) is under way. */
+  get seeking() {
+    return this.seekStep != null;
+  }
+
+  /** Ends the seek under way where it is: a whole step of the run, shown and told as at rest. */
+  cancelSeek() {
+    if (this.seekStep == null) return;
+    this.seekStep = null;
+    this.host.settled();
     this.requestDraw();
   }
 
@@ -126,9 +163,16 @@ export class FrameLoop {
       if (!host.sim()) return;
       const workStart = performance.now();
       host.applyInput();
-      if (this.seekStep != null) this.seek();
+      // A seek under way draws the scene every SEEK_DRAW_MS only: its frames are for stepping.
+      let drawScene = true;
+      if (this.seekStep != null) {
+        this.seek();
+        drawScene = this.seekStep == null || workStart - this.seekDrawnMs >= SEEK_DRAW_MS;
+        if (drawScene) this.seekDrawnMs = workStart;
+      }
+      this.showSeek(workStart);
       if (this.playing) this.advance(nowMs);
-      host.draw();
+      if (drawScene) host.draw();
       if (this.stats.rasterInWork) this.rasterNow();
       const st = this.stats;
       if (st.frames === 0) st.firstFrameMs = performance.now();
@@ -143,16 +187,32 @@ export class FrameLoop {
     if (this.playing || this.seekStep != null) this.requestDraw();
   }
 
-  /** One frame's slice of a seek (seekTo). */
+  /** One frame's slice of a seek (seekTo): SEEK_SLICE_MS of stepping, one step while its cost is unknown. */
   seek() {
     const pg = this.host.sim();
     const left = this.seekStep - Math.round(pg.time / pg.dt);
-    const fit = this.stepMs == null ? 50 : Math.max(1, Math.floor(STEP_BUDGET_MS / this.stepMs));
+    const fit = this.stepMs == null ? 1 : Math.max(1, Math.floor(SEEK_SLICE_MS / this.stepMs));
     if (left > 0) this.timedAdvance(Math.min(left, fit));
     if (left <= Math.min(left, fit) || pg.finished) {
       this.seekStep = null;
       this.host.settled();
     }
+  }
+
+  /** Shows the progress of the seek under way once it has run SEEK_SHOW_MS, or none. */
+  showSeek(nowMs) {
+    const pg = this.host.sim();
+    if (this.seekStep == null || nowMs - this.seekStartMs < SEEK_SHOW_MS) {
+      this.host.seekProgress(null);
+      return;
+    }
+    const now = Math.round(pg.time / pg.dt);
+    const span = Math.max(1, this.seekStep - this.seekFrom);
+    this.host.seekProgress({
+      time: pg.time,
+      target: this.seekStep * pg.dt,
+      fraction: Math.min(1, Math.max(0, (now - this.seekFrom) / span)),
+    });
   }
 
   /** Steps `n` for the clock, keeping the mean cost of a step for the budget. */

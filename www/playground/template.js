@@ -1,5 +1,5 @@
-// The HTML of <dvf-playground>'s shadow root: toolbar, canvas with its clock, title, hint and
-// message (over the canvas, so that a message moves nothing), and the side panels (inspected robot with its plots, parameters, legend).
+// The HTML of <dvf-playground>'s shadow root: toolbar, canvas with its clock, title, hint, a
+// long seek's progress and message (over the canvas, so that a message moves nothing), and the side panels (inspected robot with its plots, parameters, legend).
 // Parts are found by their `data-id`; the stylesheet is ../playground.css, found relative to
 // this module. Nothing from a scenario is ever put into this HTML.
 
@@ -64,9 +64,10 @@ export const TEMPLATE = `
           <dt>[ ]</dt><dd>select the previous / next robot</dd><dt>G</dt><dd>switch between a robot and its goal</dd>
           <dt>arrows</dt><dd>move the selection</dd><dt>Q E</dt><dd>turn it</dd><dt>A O</dt><dd>add a robot / an obstacle</dd>
           <dt>Delete</dt><dd>remove the selection</dd><dt>Ctrl+Z</dt><dd>undo (Ctrl+Shift+Z, Ctrl+Y: redo)</dd>
-          <dt>+ −</dt><dd>zoom</dd><dt>F</dt><dd>fit the scenario</dd><dt>Escape</dt><dd>deselect, close this help</dd><dt>?</dt><dd>this help</dd>
+          <dt>+ −</dt><dd>zoom</dd><dt>F</dt><dd>fit the scenario</dd><dt>Escape</dt><dd>deselect, close this help, stop a seek</dd><dt>?</dt><dd>this help</dd>
         </dl>
       </div>
+      <div class="seek" data-id="seek" role="status" hidden><progress data-id="seek-bar" max="1" value="0"></progress><span data-id="seek-text"></span><button type="button" data-id="seek-cancel" title="Stop the seek at the time reached (Escape)">Cancel</button></div>
       <div class="message" data-id="message" role="alert" hidden><span class="message-text" data-id="message-text"></span><span data-id="message-actions"></span><button type="button" data-id="message-close" aria-label="Dismiss the message" title="Dismiss">×</button></div>
     </div>
     <aside class="side full">
