@@ -178,7 +178,7 @@ fn teaching_presets_arrive_at_readable_speeds() {
             (s.params.v_max, s.params.omega_max),
             (Some(TEACH_V_MAX), Some(TEACH_OMEGA_MAX))
         );
-        let (r, traj) = run_recorded(&s, 1);
+        let (r, traj) = run_recorded(&s, 1).unwrap();
         assert_eq!(r.violations, 0, "{}", p.name);
         for (k, robot) in r.robots.iter().enumerate() {
             assert!(
