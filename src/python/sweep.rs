@@ -58,9 +58,9 @@ fn recipe(
                 "spacing: only the formation family has goal slots",
             ));
         }
-        if !(a.is_finite() && b.is_finite() && 2.0 <= a && a <= b) {
+        if !(a.is_finite() && b.is_finite() && 2.0 <= a && a <= b && b <= 100.0) {
             return Err(value_error(format!(
-                "spacing: must be a range of at least 2 safe radii, not {a}..={b}"
+                "spacing: must be a range within 2..=100 safe radii, not {a}..={b}"
             )));
         }
         recipe.spacing = a..=b;
