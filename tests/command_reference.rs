@@ -9,10 +9,14 @@ use serde_json::{json, Value};
 
 const PATH: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/commands.json");
 
+/// One set of robots: the parameters, poses, goals, the obstacles all of them sense, and each
+/// robot's neighbours.
+type Case = (Params, Vec<Pose>, Vec<Pose>, Vec<Obstacle>, Vec<Vec<DVec2>>);
+
 /// Robots on a spiral around the origin with every kind of heading; goals, obstacles and
 /// neighbours from the same indices, so that every branch of the controller is taken (free
 /// space, inside an obstacle's ring, beside neighbours, at the goal).
-fn cases() -> Vec<(Params, Vec<Pose>, Vec<Pose>, Vec<Obstacle>, Vec<Vec<DVec2>>)> {
+fn cases() -> Vec<Case> {
     let obstacles = vec![
         Obstacle {
             center: DVec2::new(6.0, 4.0),
