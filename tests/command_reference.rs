@@ -2,6 +2,9 @@
 //! their inputs: this test keeps the file equal to `dvf::command`, bit for bit, and the Python
 //! package's tests (python/tests/test_core.py) check its vectorised `dvf.command` against the
 //! same file. `DVF_WRITE_REFERENCE=1 cargo test --test command_reference` rewrites the file.
+//!
+//! Native only: it reads the file from disk.
+#![cfg(not(target_arch = "wasm32"))]
 
 use dvf::{command, Obstacle, Params, Pose};
 use glam::DVec2;

@@ -204,8 +204,9 @@ class Scenario:
         return (Scenario, (self._text,))
 
 
-def _dumps(data: Any) -> str:
-    """JSON text of plain data, numpy scalars and arrays included (floats at full precision)."""
+def _dumps(data: Any, root: str = "") -> str:
+    """JSON text of plain data, numpy scalars and arrays included (floats at full precision);
+    ``root`` is the path of ``data`` in the scenario, for messages."""
 
     def default(value: Any) -> Any:
         if isinstance(value, np.ndarray):
@@ -218,10 +219,36 @@ def _dumps(data: Any) -> str:
 
     try:
         return json.dumps(data, default=default, allow_nan=False)
-    except ValueError as e:
-        raise ValueError(f"scenario: not JSON data: {e}") from None
+    except ValueError:
+        # JSON has no NaN or infinity: name the field that holds one, as the core would.
+        path, value = _non_finite(data, root)
+        raise ValueError(f"{path}: must be a finite number, not {_rust_float(value)}") from None
     except TypeError as e:
         raise ValueError(f"scenario: not JSON data: {e}") from None
+
+
+def _non_finite(data: Any, path: str = "") -> Tuple[str, float]:
+    """The path (``robots[0].goal[2]``) and value of the first NaN or infinity in ``data``."""
+    if isinstance(data, np.ndarray):
+        data = data.tolist()
+    if isinstance(data, (float, np.floating)) and not np.isfinite(data):
+        return path, float(data)
+    if isinstance(data, Mapping):
+        for key, value in data.items():
+            found = _non_finite(value, f"{path}.{key}" if path else str(key))
+            if found[0]:
+                return found
+    if isinstance(data, (list, tuple)):
+        for k, value in enumerate(data):
+            found = _non_finite(value, f"{path}[{k}]")
+            if found[0]:
+                return found
+    return "", 0.0
+
+
+def _rust_float(value: float) -> str:
+    """A non-finite float as the core writes it (NaN, inf, -inf)."""
+    return "NaN" if value != value else ("inf" if value > 0 else "-inf")
 
 
 def _scenario(source: ScenarioLike) -> Scenario:
@@ -389,9 +416,9 @@ def _params_text(params: Any) -> str:
     if params is None:
         return "{}"
     if isinstance(params, Scenario):
-        return _dumps(params.params)
+        return _dumps(params.params, "params")
     if isinstance(params, Mapping):
-        return _dumps(dict(params))
+        return _dumps(dict(params), "params")
     raise ValueError(f"params: expected a dict of parameters or a Scenario, not {type(params).__name__}")
 
 

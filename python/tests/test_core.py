@@ -118,6 +118,8 @@ def test_bad_arguments_raise_value_error_naming_the_field():
         (lambda: dvf.simulate("table2-obstacles", every=0), "every"),
         (lambda: dvf.command({"k_a": -2}, [0, 0, 0], [1, 1, 0]), "params.k_a"),
         (lambda: dvf.command({"avoidance": "sideways"}, [0, 0, 0], [1, 1, 0]), "params.avoidance"),
+        (lambda: dvf.command({"v_max": float("nan")}, [0, 0, 0], [1, 1, 0]), "params.v_max"),
+        (lambda: dvf.simulate({"robots": [{"start": [0, 0, float("inf")], "goal": [1, 1, 0]}]}), "robots[0].start[2]"),
         (lambda: dvf.command(None, [[0, 0, float("nan")]], [1, 1, 0]), "poses[0][2]"),
         (lambda: dvf.command(None, [[0, 0, 0]], [[1, 1]]), "goals"),
         (lambda: dvf.command(None, [0, 0, 0], [1, 1, 0], obstacles=[[5, 5, 2, 1]]), "obstacles[0].influence"),
