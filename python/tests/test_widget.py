@@ -105,10 +105,22 @@ def lab(tmp_path_factory):
 
 
 def run_cell(page, k):
-    """Runs cell k (its editor clicked, Shift+Enter)."""
-    editor = page.locator(".jp-Notebook .jp-Cell").nth(k).locator(".jp-InputArea-editor")
-    editor.click()
-    page.keyboard.press("Shift+Enter")
+    """Runs cell k (its editor clicked, Shift+Enter) and waits until the kernel has taken it:
+    its prompt shows `[*]` or a count. A key pressed while the notebook is still connecting is
+    dropped; it is pressed again then."""
+    cell = page.locator(".jp-Notebook .jp-Cell").nth(k)
+    prompt = cell.locator(".jp-InputPrompt")
+    for _ in range(5):
+        cell.locator(".jp-InputArea-editor").click()
+        page.keyboard.press("Shift+Enter")
+        try:
+            page.wait_for_function(
+                "(p) => /\\[(\\*|\\d+)\\]/.test(p.textContent)", arg=prompt.element_handle(), timeout=10_000
+            )
+            return
+        except sync_api.TimeoutError:
+            continue
+    raise AssertionError(f"cell {k} did not run")
 
 
 def output_of(page, k, marker):
@@ -138,6 +150,8 @@ def test_the_widget_draws_and_syncs_both_ways_in_jupyterlab(lab):
         try:
             page.goto(f"{lab}/lab/tree/widgets.ipynb?token={TOKEN}")
             page.locator(".jp-Notebook .jp-Cell").nth(len(CELLS) - 1).wait_for(timeout=WAIT_MS)
+            # The kernel is up before the first cell runs.
+            page.get_by_text("Python 3 (ipykernel) | Idle").wait_for(timeout=WAIT_MS)
             run_cell(page, 0)
             run_cell(page, 1)
             # Both figures draw: a scene loaded and frames painted, each in its own element.
