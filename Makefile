@@ -112,7 +112,7 @@ wheel: package
 test-python: wheel
 	cargo build --bin dvf
 	$(PYENV)/bin/pip install --quiet --force-reinstall --no-deps target/wheels/dvf-*.whl
-	DVF_BIN=$(CURDIR)/target/debug/dvf $(PYENV)/bin/python -m pytest python/tests
+	DVF_BIN=$(CURDIR)/target/debug/dvf $(PYENV)/bin/python -m pytest -p no:cacheprovider python/tests
 
 test: tools lint test-native test-node test-browser test-e2e test-python
 
