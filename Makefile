@@ -108,11 +108,13 @@ wheel: package
 
 # The Python tests (python/tests/): the wheel installed into the virtual environment
 # target/pyenv/ (.ci/install), checked against the command line (target/debug/dvf), on a Dask
-# LocalCluster, and in a JupyterLab driven by Chromium (screenshots in test-results/python/).
+# LocalCluster, in a JupyterLab driven by Chromium and in an exported notebook (screenshots in
+# test-results/python/); and the wheel alone in a clean virtual environment.
 test-python: wheel
 	cargo build --bin dvf
 	$(PYENV)/bin/pip install --quiet --force-reinstall --no-deps target/wheels/dvf-*.whl
-	DVF_BIN=$(CURDIR)/target/debug/dvf $(PYENV)/bin/python -m pytest -p no:cacheprovider python/tests
+	DVF_BIN=$(CURDIR)/target/debug/dvf DVF_WHEEL=$$(ls $(CURDIR)/target/wheels/dvf-*.whl) \
+	  $(PYENV)/bin/python -m pytest -p no:cacheprovider python/tests
 
 test: tools lint test-native test-node test-browser test-e2e test-python
 
