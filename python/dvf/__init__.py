@@ -42,6 +42,7 @@ __all__ = [
     "command",
     "field",
     "sweep",
+    "sweep_shard",
     "merge",
     "presets",
     "DEFAULT_PRESET",
@@ -117,6 +118,17 @@ class Scenario:
     def preset(cls, name: str) -> "Scenario":
         """A built-in scenario (:func:`presets`; ``crowd-N`` for a crowd of N robots)."""
         return cls(_dvf.preset(name))
+
+    @classmethod
+    def from_preset(cls, name: str) -> "Scenario":
+        """The same as :meth:`preset`."""
+        return cls.preset(name)
+
+    @classmethod
+    def from_file(cls, path: Union[str, "os.PathLike[str]"]) -> "Scenario":
+        """The scenario of the JSON file at ``path``."""
+        with open(path, encoding="utf-8") as f:
+            return cls(f.read())
 
     def to_dict(self) -> Dict[str, Any]:
         """The scenario as a dict: every default filled in, the bounds resolved (a fresh copy)."""
@@ -360,6 +372,21 @@ class Run:
             [np.nan if r["converged_at"] is None else r["converged_at"] for r in self.report["robots"]],
             dtype=float,
         )
+
+    #: The columns of :attr:`trajectories` and of :meth:`to_pandas`.
+    COLUMNS = ("t", "robot", "x", "y", "theta", "v", "omega")
+
+    @property
+    def trajectories(self) -> np.ndarray:
+        """The samples as one table of shape ``(samples · robots, 7)``, columns
+        :attr:`COLUMNS` (``t, robot, x, y, θ, v, ω``), one row per robot and sample in time
+        order: the rows of ``dvf simulate --csv``, as numbers."""
+        k, n, _ = self.samples.shape
+        table = np.empty((k * n, 7))
+        table[:, 0] = self.samples[:, :, 0].reshape(-1)
+        table[:, 1] = np.tile(np.arange(n, dtype=float), k)
+        table[:, 2:] = self.samples[:, :, 1:].reshape(k * n, 5)
+        return table
 
     def to_pandas(self) -> "Any":
         """The samples as a pandas DataFrame with columns ``t, robot, x, y, theta, v, omega``,
@@ -621,6 +648,16 @@ def sweep(
     if min(k, n) < 1:
         raise ValueError(f"shard: must be K/N with 1 ≤ K ≤ N, not {k}/{n}")
     return [json.loads(line) for line in _dvf.sweep_shard(int(k), int(n), int(count), int(seed), **options)]
+
+
+def sweep_shard(
+    shard: Union[Tuple[int, int], str],
+    count: int,
+    seed: int = 0,
+    **options: Any,
+) -> List[Dict[str, Any]]:
+    """The outcomes of one shard, ``(k, n)`` or ``"k/n"``: :func:`sweep` with ``shard``."""
+    return sweep(count, seed, shard=shard, **options)
 
 
 def merge(outcomes: Iterable[Union[Mapping[str, Any], str]]) -> Dict[str, Any]:

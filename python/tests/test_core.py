@@ -50,6 +50,8 @@ def test_trajectories_are_the_csv_rows(dvf_bin, tmp_path, name):
     assert np.array_equal(run.samples.reshape(k * n, 6)[:, 0], table[:, 0])
     assert np.array_equal(np.tile(np.arange(n), k), table[:, 1])
     assert np.array_equal(run.samples.reshape(k * n, 6)[:, 1:], table[:, 2:])
+    assert np.array_equal(run.trajectories, table)
+    assert list(dvf.Run.COLUMNS) == rows[0]
     frame = run.to_pandas()
     assert list(frame.columns) == rows[0]
     assert np.array_equal(frame.to_numpy(dtype=float), table)
@@ -74,6 +76,7 @@ def test_scenarios_from_a_dict_a_file_json_and_back(tmp_path):
     path = tmp_path / "s.json"
     s.to_json(path)
     assert dvf.Scenario(str(path)) == s == dvf.Scenario(path) == dvf.Scenario.from_json(path)
+    assert dvf.Scenario.from_file(path) == s == dvf.Scenario.from_preset("example3-circle-swap")
     assert dvf.Scenario(s.to_json()) == s
     assert pickle.loads(pickle.dumps(s)) == s
     small = dvf.Scenario({"robots": [{"start": [0, 0, 0], "goal": [10, 0, 0]}]})
@@ -189,6 +192,7 @@ def test_sweep_shards_and_merge_match_the_command_line(dvf_bin, tmp_path):
     summary = dvf.sweep(**OPTIONS)
     assert bits(summary) == bits(cli_json(dvf_bin, "sweep", *SWEEP))
     shards = [dvf.sweep(**OPTIONS, shard=(k, 3)) for k in (1, 2, 3)]
+    assert dvf.sweep_shard("2/3", **OPTIONS) == shards[1]
     for k, rows in enumerate(shards, start=1):
         assert bits(rows) == bits(lines(cli(dvf_bin, "sweep", *SWEEP, "--shard", f"{k}/3")))
     outcomes = [row for rows in shards for row in rows]
