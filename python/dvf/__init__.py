@@ -68,7 +68,8 @@ class Scenario:
 
     - a ``dict`` in the scenario format (only ``robots`` is required);
     - another ``Scenario``;
-    - a path to a JSON scenario file (``str`` ending in ``.json`` or ``os.PathLike``);
+    - a path to a JSON scenario file (``os.PathLike``, or a ``str`` ending in ``.json`` or
+      naming a file);
     - JSON text (a ``str`` starting with ``{``);
     - a preset's name (:func:`presets`; ``crowd-N`` included).
 
@@ -83,13 +84,13 @@ class Scenario:
             text = source._text
         elif isinstance(source, Mapping):
             text = _dvf.check(_dumps(source))
+        elif isinstance(source, str) and source.lstrip().startswith("{"):
+            text = _dvf.check(source)
         elif isinstance(source, os.PathLike) or (
-            isinstance(source, str) and source.endswith(".json") and not source.lstrip().startswith("{")
+            isinstance(source, str) and (source.endswith(".json") or os.path.isfile(source))
         ):
             with open(source, encoding="utf-8") as f:
                 text = _dvf.check(f.read())
-        elif isinstance(source, str) and source.lstrip().startswith("{"):
-            text = _dvf.check(source)
         elif isinstance(source, str):
             text = _dvf.preset(source)
         else:
@@ -204,7 +205,8 @@ class Scenario:
         return isinstance(other, Scenario) and self._dict == other._dict
 
     def __hash__(self) -> int:
-        return hash(self._text)
+        # From values that equal scenarios share (0.0 and -0.0 are equal, their texts are not).
+        return hash((self.name, len(self._dict["robots"]), len(self._dict["obstacles"]), self.duration))
 
     def __repr__(self) -> str:
         return (
