@@ -72,12 +72,14 @@ async function render({ model, el }) {
     sendTime(true);
   };
   const onTick = () => sendTime(!fig.playing);
-  const onFinished = () => sendTime(true);
+  const onRest = () => sendTime(true);
   fig.addEventListener('change', onChange);
   fig.addEventListener('tick', onTick);
-  fig.addEventListener('finished', onFinished);
-  // The clock has no event of its own for play and pause: its state is read a few times a
-  // second.
+  fig.addEventListener('finished', onRest);
+  // `viewchange` comes, among others, when the clock comes to rest (a pause).
+  fig.addEventListener('viewchange', onRest);
+  // The clock has no event of its own for play and pause: its state is also read a few times
+  // a second.
   const poll = setInterval(() => {
     if (fig.playing !== model.get('playing')) sendTime(true);
   }, TIME_UPDATE_MS);

@@ -1,7 +1,7 @@
 """dvf.widget.Playground in a real JupyterLab, driven by Chromium: the test starts a JupyterLab
 server on a free port of 127.0.0.1, opens a notebook with two widgets, runs its cells and
-checks that both figures draw, that an edit in a figure reaches Python's trait, and that
-traits set in Python reach the figures. Screenshots in test-results/python/."""
+checks that both figures draw, that an edit in a figure and its clock (time, playing) reach
+Python's traits, and that traits set in Python reach the figures. Screenshots in test-results/python/."""
 
 from __future__ import annotations
 
@@ -35,6 +35,7 @@ CELLS = [
     "w.load('example3-line-swap')\nw2.time = 4.0\nprint('SET')",
     "w2.playing = True",
     "print('STATE', w2.playing, w2.time > 4.0)",
+    "print('PAUSED', w2.playing, repr(w2.time))",
 ]
 
 
@@ -209,6 +210,21 @@ def test_the_widget_draws_and_syncs_both_ways_in_jupyterlab(lab):
             )
             run_cell(page, 5)
             assert "STATE True True" in output_of(page, 5, "STATE")
+            # The figure's own Pause button: Python learns that it stopped, and where.
+            figs.nth(1).get_by_role("button", name="Pause").click()
+            page.wait_for_function(
+                "() => !document.querySelectorAll('dvf-playground')[1].playing", timeout=WAIT_MS
+            )
+            stopped = figs.nth(1).evaluate("f => f.time")
+            # The figure sends its state as it comes to rest; the kernel reads it once it has
+            # arrived (the cell runs again until then, a few times at most).
+            for _ in range(10):
+                run_cell(page, 6)
+                text = output_of(page, 6, "PAUSED")
+                if text.split()[1] == "False":
+                    break
+                page.wait_for_timeout(500)
+            assert text.split()[1] == "False" and float(text.split()[2]) == stopped, (text, stopped)
             page.screenshot(path=str(RESULTS / "widget-synced.png"))
             assert not errors, errors
         except BaseException:
