@@ -6,9 +6,10 @@
 >>> fig                                                   # doctest: +SKIP
 
 The widget carries the element's single-file build (the wasm module and the stylesheet
-inlined), so that neither Jupyter's server nor any other hosts a file for it: it draws in
-JupyterLab, in Notebook 7 and in a notebook exported to HTML with its widget state. Its traits
-follow the figure both ways:
+inlined), so that neither Jupyter's server nor any other hosts a file for it: it draws
+wherever anywidget runs, JupyterLab and a notebook exported to HTML with its widget state
+among them (python/tests/test_widget.py, test_export.py). Its traits follow the figure both
+ways:
 
 - ``scenario`` (dict): the scene, every default filled in; an edit in the figure (a drag, the
   panel, undo) sets it, and a scenario set in Python loads into the figure at t = 0;
@@ -29,7 +30,7 @@ from typing import Any, Optional
 import anywidget
 import traitlets
 
-from . import Scenario, ScenarioLike, Run, simulate
+from . import DEFAULT_PRESET, Run, Scenario, ScenarioLike, simulate
 
 __all__ = ["Playground"]
 
@@ -71,7 +72,7 @@ class Playground(anywidget.AnyWidget):
         playing: bool = False,
         **kwargs: Any,
     ) -> None:
-        s = Scenario(scenario if scenario is not None else _default_preset())
+        s = Scenario(scenario if scenario is not None else DEFAULT_PRESET)
         super().__init__(scenario=s.to_dict(), time=time, controls=controls, playing=playing, **kwargs)
 
     @traitlets.validate("scenario")
@@ -100,8 +101,3 @@ class Playground(anywidget.AnyWidget):
         """The figure's scenario simulated to its end (:func:`dvf.simulate`)."""
         return simulate(self.to_scenario(), every=every)
 
-
-def _default_preset() -> str:
-    from . import DEFAULT_PRESET
-
-    return DEFAULT_PRESET
