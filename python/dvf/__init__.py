@@ -174,7 +174,8 @@ class Scenario:
     @property
     def bounds(self) -> Tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)``: the area drawn and sampled."""
-        return tuple(self._dict["bounds"])  # type: ignore[return-value]
+        b = self._dict["bounds"]
+        return (b[0], b[1], b[2], b[3])
 
     @property
     def params(self) -> Dict[str, Any]:
@@ -397,7 +398,7 @@ class Run:
         Needs pandas (``pip install dvf[pandas]``).
         """
         try:
-            import pandas as pd
+            import pandas as pd  # type: ignore[import-untyped, unused-ignore]
         except ImportError as e:  # pragma: no cover - depends on the environment
             raise ImportError("Run.to_pandas() needs pandas: pip install pandas") from e
         k, n, _ = self.samples.shape

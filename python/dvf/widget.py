@@ -25,7 +25,7 @@ Several widgets in one notebook are independent figures.
 from __future__ import annotations
 
 from importlib import resources
-from typing import Any, Optional
+from typing import Any, Dict, Optional
 
 import anywidget
 import traitlets
@@ -76,7 +76,7 @@ class Playground(anywidget.AnyWidget):
         super().__init__(scenario=s.to_dict(), time=time, controls=controls, playing=playing, **kwargs)
 
     @traitlets.validate("scenario")
-    def _check_scenario(self, proposal: Any) -> dict:
+    def _check_scenario(self, proposal: Any) -> Dict[str, Any]:
         value = proposal["value"]
         if isinstance(value, Scenario):
             return value.to_dict()
