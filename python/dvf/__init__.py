@@ -37,6 +37,7 @@ __version__: str = _dvf.__version__
 __all__ = [
     "Scenario",
     "Run",
+    "Record",
     "FieldGrid",
     "simulate",
     "command",
@@ -266,6 +267,27 @@ def _rust_float(value: float) -> str:
     return "NaN" if value != value else ("inf" if value > 0 else "-inf")
 
 
+class Record(Dict[str, Any]):
+    """A dict from the core's JSON (a report, a robot's report, a sweep's summary or row) whose
+    keys are attributes too: ``run.robots[0].converged_at`` is ``run.robots[0]["converged_at"]``."""
+
+    __slots__ = ()
+
+    def __getattr__(self, key: str) -> Any:
+        try:
+            return self[key]
+        except KeyError:
+            raise AttributeError(key) from None
+
+    def __dir__(self) -> List[str]:
+        return sorted(set(super().__dir__()) | set(self))
+
+
+def _records(text: str) -> Any:
+    """The core's JSON text as plain values with every object a :class:`Record`."""
+    return json.loads(text, object_hook=Record)
+
+
 def _scenario(source: ScenarioLike) -> Scenario:
     return source if isinstance(source, Scenario) else Scenario(source)
 
@@ -439,7 +461,7 @@ def simulate(scenario: ScenarioLike, every: int = 1) -> Run:
     if every < 1:
         raise ValueError(f"every: must be at least 1, not {every}")
     report, samples = _dvf.simulate(s._text, int(every))
-    return Run(s, json.loads(report), samples, int(every))
+    return Run(s, _records(report), samples, int(every))
 
 
 def _params_text(params: Any) -> str:
@@ -637,7 +659,7 @@ def sweep(
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
             raise ValueError(f"{name}: must be a whole number of at least 0, not {value!r}")
     if shard is None:
-        return json.loads(_dvf.sweep(int(count), int(seed), **options))
+        return _records(_dvf.sweep(int(count), int(seed), **options))
     if isinstance(shard, str):
         try:
             k, n = (int(part) for part in shard.split("/"))
@@ -650,7 +672,7 @@ def sweep(
             raise ValueError(f"shard: expected (k, n), not {shard!r}") from None
     if min(k, n) < 1:
         raise ValueError(f"shard: must be K/N with 1 ≤ K ≤ N, not {k}/{n}")
-    return [json.loads(line) for line in _dvf.sweep_shard(int(k), int(n), int(count), int(seed), **options)]
+    return [_records(line) for line in _dvf.sweep_shard(int(k), int(n), int(count), int(seed), **options)]
 
 
 def sweep_shard(
@@ -669,7 +691,7 @@ def merge(outcomes: Iterable[Union[Mapping[str, Any], str]]) -> Dict[str, Any]:
     Raises ``ValueError`` when they mix recipes, or miss or repeat a seed.
     """
     lines = [o if isinstance(o, str) else _dumps(dict(o)) for o in outcomes]
-    return json.loads(_dvf.merge(lines))
+    return _records(_dvf.merge(lines))
 
 
 def presets() -> Dict[str, str]:

@@ -33,6 +33,12 @@ def test_a_preset_reports_what_dvf_simulate_prints(dvf_bin, name):
     assert run.violations == printed["violations"]
     assert run.min_pair_distance == printed["min_pair_distance"]
     assert [r["converged_at"] for r in run.robots] == [r["converged_at"] for r in printed["robots"]]
+    # Every object of the report is a dict whose keys are attributes too.
+    assert run.robots[0].converged_at == run.robots[0]["converged_at"]
+    assert run.smoothness.max_omega_step == printed["smoothness"]["max_omega_step"]
+    assert pickle.loads(pickle.dumps(run.report)) == run.report
+    with pytest.raises(AttributeError):
+        run.report.no_such_key
 
 
 @pytest.mark.parametrize("name", ["table2-obstacles", "example3-circle-swap"])
@@ -191,6 +197,7 @@ OPTIONS = dict(count=6, seed=40, robots=(2, 5), obstacles=(0, 2))
 def test_sweep_shards_and_merge_match_the_command_line(dvf_bin, tmp_path):
     summary = dvf.sweep(**OPTIONS)
     assert bits(summary) == bits(cli_json(dvf_bin, "sweep", *SWEEP))
+    assert summary.convergence_time.p50 == summary["convergence_time"]["p50"]
     shards = [dvf.sweep(**OPTIONS, shard=(k, 3)) for k in (1, 2, 3)]
     assert dvf.sweep_shard("2/3", **OPTIONS) == shards[1]
     for k, rows in enumerate(shards, start=1):
