@@ -1,5 +1,5 @@
 # Types of the extension module `dvf._dvf` (src/python/): the core, which the package
-# (dvf/__init__.py) wraps. Scenarios, reports and sweep outcomes cross as JSON text; arrays
+# (dvf/) wraps. Scenarios, reports and sweep outcomes cross as JSON text; arrays
 # are float64 numpy arrays the core filled and numpy owns. Every function raises ValueError
 # with the core's message, which names the offending field.
 from typing import List, Optional, Sequence, Tuple
