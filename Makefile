@@ -4,7 +4,7 @@
 PORT ?= 8080
 export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
 
-.PHONY: package docs serve build-wasm test lint lint-comments lint-rust lint-js test-native test-node test-browser test-e2e tools bench bench-native bench-wasm bench-browser bench-peer picture
+.PHONY: package docs serve build-wasm test lint lint-comments lint-rust lint-js test-native test-node test-browser test-e2e test-python wheel tools bench bench-native bench-wasm bench-browser bench-peer picture
 
 tools:
 	bash .ci/install
@@ -68,6 +68,7 @@ lint-rust:
 	cargo clippy --target wasm32-unknown-unknown --lib --tests -- -D warnings
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --no-default-features
+	cargo clippy --lib --no-default-features --features python -- -D warnings
 
 # The JavaScript of www/ and tests/e2e/: one linter and formatter, and the declarations
 # type-checked against the code (and against the package's own, hence the build).
@@ -98,7 +99,28 @@ test-e2e: package docs
 	node tests/e2e/crowd.mjs
 	node tests/e2e/instrument.mjs
 
-test: tools lint test-native test-node test-browser test-e2e
+# The Python wheel (python/pyproject.toml, built by maturin; docs/book/src/python.md) in
+# target/wheels/: the library with its Python module (the `python` feature, without the command
+# line) and the playground's single-file build of `make package`, for the notebook widget. It
+# builds in its own target folder, so that the native builds keep their caches.
+PYENV := target/pyenv
+wheel: package
+	mkdir -p python/dvf/static
+	cp target/package/dvf-playground/dvf-playground.inline.js python/dvf/static/
+	rm -rf target/wheels
+	cd python && ../$(PYENV)/bin/maturin build --release --out ../target/wheels --target-dir ../target/python
+
+# The Python tests (python/tests/): the wheel installed into the virtual environment
+# target/pyenv/ (.ci/install), checked against the command line (target/debug/dvf), on a Dask
+# LocalCluster, in a JupyterLab driven by Chromium and in an exported notebook (screenshots in
+# test-results/python/); and the wheel alone in a clean virtual environment.
+test-python: wheel
+	cargo build --bin dvf
+	$(PYENV)/bin/pip install --quiet --force-reinstall --no-deps target/wheels/dvf-*.whl
+	DVF_BIN=$(CURDIR)/target/debug/dvf DVF_WHEEL=$$(ls $(CURDIR)/target/wheels/dvf-*.whl) \
+	  $(PYENV)/bin/python -m pytest -p no:cacheprovider python/tests
+
+test: tools lint test-native test-node test-browser test-e2e test-python
 
 # The README's picture (docs/playground.png), from the release build: a separate target, so that
 # `make test` leaves the tree as it found it.

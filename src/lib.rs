@@ -79,6 +79,8 @@
 //! - `cli` (default): the `dvf` command line (`dvf simulate`, `dvf sweep`, `dvf bench`, …)
 //!   and its argument parser, clap. A library user turns it off:
 //!   `dvf = { version = "0.1", default-features = false }`.
+//! - `python`: the Python module of the `dvf` wheel (pyo3 and numpy; built by maturin from
+//!   `python/pyproject.toml`, docs/book/src/python.md).
 //!
 //! Natively the library runs a sweep's scenarios and a large crowd's step on rayon's
 //! threads, with the same bits as on one thread; the wasm build runs them on one.
@@ -116,6 +118,9 @@ pub mod sweep;
 pub mod playground;
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;
+// The Python module `dvf._dvf` of the wheel (the `python` feature, native only).
+#[cfg(all(feature = "python", not(target_arch = "wasm32")))]
+mod python;
 
 // Selects without a branch, for the hot loops; the sines, cosines and arctangents every build
 // takes alike.

@@ -7,7 +7,8 @@
 //! - `json` blocks are scenarios: `dvf simulate` runs each.
 //!
 //! Rust blocks are doctests (src/doc_examples.rs); `html` and `js` blocks are loaded in Chromium
-//! by tests/e2e/book.mjs; `text` and `toml` blocks are illustrations.
+//! by tests/e2e/book.mjs; `python` blocks are run by python/tests/test_docs.py; `text` and
+//! `toml` blocks are illustrations.
 //!
 //! Native only: it runs the binary as a child process.
 #![cfg(not(target_arch = "wasm32"))]
@@ -26,6 +27,7 @@ const KINDS: &[&str] = &[
     "js",
     "text",
     "toml",
+    "python",
 ];
 
 /// A fenced code block of a Markdown file.

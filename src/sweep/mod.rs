@@ -26,11 +26,14 @@
 //!   [`formation_scenario`] and its goal [`slots`]);
 //! - `outcome.rs`: one scenario run, as a shard's JSON line records it ([`Outcome`]);
 //! - `summary.rs`: a sweep and its statistics ([`sweep`], [`Summary`], [`Quantiles`]);
-//! - `merge.rs`: shards' lines checked and summarised ([`Merge`]).
+//! - `merge.rs`: shards' lines checked and summarised ([`Merge`]);
+//! - `plan.rs`: a sweep as the command line and the Python package ask for it ([`Request`]),
+//!   checked ([`Plan`]) and run whole or shard by shard.
 
 mod generate;
 mod merge;
 mod outcome;
+mod plan;
 mod recipe;
 mod settings;
 mod summary;
@@ -38,6 +41,7 @@ mod summary;
 pub use generate::{formation_scenario, random_scenario, scenario, slots, Layout};
 pub use merge::{Merge, MergeError};
 pub use outcome::{Arrival, Closest, Outcome, RecipeKey, Sweep};
+pub use plan::{nothing_ran, Plan, Request, MAX_SWEEP};
 pub use recipe::{Family, Recipe, DT};
 pub use settings::{
     label, points, set, value_of, with, Axis, Values, MAX_AXIS, MAX_POINTS, RECIPE_NAMES,

@@ -2,55 +2,31 @@
 //! `dvf sweep merge`: the summary of the shards' lines.
 
 use crate::args::SweepArgs;
-use dvf::params::Avoidance;
-use dvf::scenario::{Scenario, MAX_OBSTACLES, MAX_ROBOTS};
-use dvf::sweep::{
-    label, points, sweep_points, value_of, with, Axis, Family, Merge, Outcome, Recipe, Summaries,
-    Sweep, Values,
-};
+use dvf::scenario::Scenario;
+use dvf::sweep::{label, nothing_ran, Merge, Plan, Request, Summaries, Values};
 use dvf::Report;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
-/// Largest `--count` of `dvf sweep`.
-const MAX_SWEEP: usize = 1_000_000;
-
 /// Runs the sweep `args` describe: the summary as one JSON line (one group per point of the
 /// grid), or with `--shard` one line per scenario of the shard. Failing scenarios are written
 /// to `--write`'s folder. A sweep in which no scenario ran prints its summary and fails.
 pub fn run(out: &mut impl Write, args: SweepArgs) -> Result<(), String> {
-    let (recipe, set) = recipe(&args)?;
-    let axes = args
-        .grid
-        .iter()
-        .map(|t| Axis::parse(t))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| e.to_string())?;
-    if let Some(a) = axes.iter().find(|a| set.contains_key(&a.name)) {
-        return Err(format!("{}: given by both --set and --grid", a.name));
-    }
-    let grid = points(&axes).map_err(|e| e.to_string())?;
-    // Every point's values are read and checked before anything runs.
-    let runs: Vec<(Values, Recipe)> = grid
-        .iter()
-        .map(|v| Ok((v.clone(), with(&recipe, v)?)))
-        .collect::<Result<_, dvf::Error>>()
-        .map_err(|e| e.to_string())?;
-    let SweepArgs {
-        shard,
-        seed,
-        count,
-        write,
-        ..
-    } = args;
-    let total = count * runs.len();
-    if total > MAX_SWEEP {
-        return Err(format!(
-            "count: count × grid points must be at most {MAX_SWEEP}, not {count} × {}",
-            runs.len()
-        ));
-    }
+    let plan = Plan::new(&Request {
+        family: args.family,
+        seed: args.seed,
+        count: args.count,
+        robots: args.robots,
+        obstacles: args.obstacles,
+        spacing: args.spacing,
+        avoidance: args.avoidance,
+        barrier_rate: parse_rate(&args.barrier_rate)?,
+        set: args.set,
+        grid: args.grid,
+    })
+    .map_err(|e| e.to_string())?;
+    let write = args.write;
     if let Some(dir) = &write {
         std::fs::create_dir_all(dir)
             .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
@@ -62,30 +38,13 @@ pub fn run(out: &mut impl Write, args: SweepArgs) -> Result<(), String> {
             write_if_failed(dir, &file_name(s, values), scenario, report, &write_error);
         }
     };
-    if let Some((k, n)) = shard {
-        // Every N-th scenario from the K-th, point by point and seed by seed, one line each as
-        // it finishes: a shard cut short leaves whole lines, and merge names the missing seeds.
-        let id = Sweep::id_of(&recipe, &grid, seed, count);
-        for index in (k - 1..total).step_by(n) {
-            let (point, (values, recipe)) = (index / count, &runs[index / count]);
-            let s = seed.wrapping_add((index % count) as u64);
-            let mut outcome = Outcome::run(recipe, s, |scenario, report| {
-                write_failure(values, s, scenario, report);
-            });
-            outcome.sweep = Some(Sweep {
-                id: id.clone(),
-                seed,
-                count,
-                points: runs.len(),
-                point,
-                shard: [k, n],
-            });
-            outcome.values.clone_from(values);
-            outcome.recipe.set.clone_from(&set);
-            crate::write_json(out, &outcome)?;
-        }
+    if let Some(shard) = args.shard {
+        plan.shard(shard, write_failure, |outcome| {
+            crate::write_json(out, &outcome).map_err(Failed)
+        })
+        .map_err(|Failed(e)| e)?;
     } else {
-        let summaries = sweep_points(&runs, seed, count, write_failure);
+        let summaries = plan.summaries(write_failure);
         crate::write_json(out, &summaries)?;
         ran(&summaries)?;
     }
@@ -95,19 +54,19 @@ pub fn run(out: &mut impl Write, args: SweepArgs) -> Result<(), String> {
     }
 }
 
+/// A message of a shard's run: its lines' writing, or the plan's own refusal.
+struct Failed(String);
+
+impl From<dvf::Error> for Failed {
+    fn from(e: dvf::Error) -> Self {
+        Self(e.to_string())
+    }
+}
+
 /// An error unless some scenario ran at every point: a sweep of skipped scenarios has nothing
 /// to report.
 fn ran(summaries: &Summaries) -> Result<(), String> {
-    for (values, s) in summaries.all() {
-        if s.scenarios == 0 {
-            let at = values.map_or(String::new(), |v| format!(" at {}", label(v, " ")));
-            return Err(format!(
-                "no scenario ran{at}: all {} were skipped because their robots or obstacles could not be placed; ask for fewer robots (--robots) or obstacles (--obstacles), or a larger area (--set side=…)",
-                s.skipped
-            ));
-        }
-    }
-    Ok(())
+    nothing_ran(summaries).map_or(Ok(()), Err)
 }
 
 /// The file a failing scenario is written to: `seed-S.json`, or with a grid
@@ -118,66 +77,6 @@ fn file_name(seed: u64, values: &Values) -> String {
     } else {
         format!("seed-{seed}-{}.json", label(values, ","))
     }
-}
-
-/// The recipe of `args`, its ranges and settings checked, and the values `--set` gave.
-fn recipe(args: &SweepArgs) -> Result<(Recipe, Values), String> {
-    let family = match args.family.as_str() {
-        "dense" => Family::Dense,
-        "formation" => Family::Formation,
-        _ => Family::Random,
-    };
-    let mut recipe = Recipe::of(family);
-    let robots = args
-        .robots
-        .unwrap_or((*recipe.robots.start(), *recipe.robots.end()));
-    let obstacles = args
-        .obstacles
-        .unwrap_or((*recipe.obstacles.start(), *recipe.obstacles.end()));
-    if let Some((a, b)) = args.spacing {
-        if family != Family::Formation {
-            return Err("spacing: only the formation family has goal slots".into());
-        }
-        recipe.spacing = a..=b;
-    }
-    let count = args.count;
-    if !(1..=MAX_SWEEP).contains(&count) {
-        return Err(format!(
-            "count: must be between 1 and {MAX_SWEEP}, not {count}"
-        ));
-    }
-    if robots.1 > MAX_ROBOTS || robots.0 == 0 {
-        return Err(format!(
-            "robots: must be between 1 and {MAX_ROBOTS}, not {}..={}",
-            robots.0, robots.1
-        ));
-    }
-    if obstacles.1 > MAX_OBSTACLES {
-        return Err(format!(
-            "obstacles: at most {MAX_OBSTACLES}, not {}",
-            obstacles.1
-        ));
-    }
-    recipe.robots = robots.0..=robots.1;
-    recipe.obstacles = obstacles.0..=obstacles.1;
-    recipe.params.avoidance = if args.avoidance == "paper" {
-        Avoidance::Paper
-    } else {
-        Avoidance::Exit
-    };
-    recipe.params.barrier_rate = parse_rate(&args.barrier_rate)?;
-    let mut set = Values::new();
-    for text in &args.set {
-        let Some((name, value)) = text.split_once('=') else {
-            return Err(format!("set: expected NAME=VALUE, not {text:?}"));
-        };
-        let name = name.trim();
-        if set.insert(name.to_owned(), value_of(value)).is_some() {
-            return Err(format!("set: {name} is given twice"));
-        }
-    }
-    let recipe = with(&recipe, &set).map_err(|e| e.to_string())?;
-    Ok((recipe, set))
 }
 
 /// A positive barrier rate, or `none`.
