@@ -146,20 +146,13 @@ export function csvSize(scenario) {
 }
 
 /**
- * The trajectories of a whole run of `scenario` from its starts as CSV text pieces, in the
- * command line's format: CSV_HEADER, then for every step (t = 0 first, the end last) one row
- * per robot, `t,robot,x,y,theta,v,omega` (robot numbered from 0; s, m, m, rad, m/s, rad/s).
- * Works in slices of CSV_SLICE_MS so that the page stays responsive; `progress(fraction)`
- * after each; resolves null once `signal` is aborted.
- * @param {any} scenario
- * @param {{progress?: (fraction: number) => void, signal?: AbortSignal}} [options]
- * @returns {Promise<string[] | null>}
- */
-/**
  * The time of step `steps` of size `dt` as `dvf simulate --csv` writes it (src/sim/run.rs,
  * `step_time`): `dt`'s shortest decimal `m / 10^d` times `steps`, with `m` and `10^d` exact, so
  * that one rounding gives the nearest number to the decimal (`0.35`, not the binary product's
  * `0.35000000000000003`). A `dt` that has no such decimal gets the binary product.
+ * @param {number} steps
+ * @param {number} dt
+ * @returns {number}
  */
 export function stepTime(steps, dt) {
   const EXACT = 2 ** 53;
@@ -176,6 +169,16 @@ export function stepTime(steps, dt) {
   return steps * dt;
 }
 
+/**
+ * The trajectories of a whole run of `scenario` from its starts as CSV text pieces, in the
+ * command line's format: CSV_HEADER, then for every step (t = 0 first, the end last) one row
+ * per robot, `t,robot,x,y,theta,v,omega` (robot numbered from 0; s, m, m, rad, m/s, rad/s).
+ * Works in slices of CSV_SLICE_MS so that the page stays responsive; `progress(fraction)`
+ * after each; resolves null once `signal` is aborted.
+ * @param {any} scenario
+ * @param {{progress?: (fraction: number) => void, signal?: AbortSignal}} [options]
+ * @returns {Promise<string[] | null>}
+ */
 export async function trajectoriesCsv(scenario, { progress = () => {}, signal } = {}) {
   const { memory } = await wasmReady();
   const pg = new Playground(scenario);

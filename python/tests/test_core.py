@@ -224,6 +224,20 @@ def test_sweep_shards_and_merge_match_the_command_line(dvf_bin, tmp_path):
         dvf.merge(shards[0] + dvf.sweep(**{**OPTIONS, "robots": 3}, shard=(2, 3)))
 
 
+def test_a_sweep_sets_and_varies_parameters_as_the_command_line_does(dvf_bin):
+    options = dict(count=3, seed=5, robots=(2, 4), set={"v_max": 3}, grid={"k_a": [1, 2.5]})
+    study = dvf.sweep(**options)
+    printed = cli_json(dvf_bin, "sweep", "--count", "3", "--seed", "5", "--robots", "2..=4",
+                       "--set", "v_max=3", "--grid", "k_a=1,2.5")
+    assert bits(study) == bits(printed)
+    assert [g["values"]["k_a"] for g in study["groups"]] == [1.0, 2.5]
+    rows = dvf.sweep(**options, shard=(1, 2)) + dvf.sweep(**options, shard=(2, 2))
+    assert all(r["values"]["k_a"] in (1.0, 2.5) for r in rows)
+    assert bits(dvf.merge(rows)) == bits(study)
+    with pytest.raises(ValueError, match="k_v"):
+        dvf.sweep(count=2, set={"k_v": -1})
+
+
 def test_the_package_carries_its_types():
     from importlib import resources
 
