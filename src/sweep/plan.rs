@@ -298,7 +298,7 @@ mod tests {
         bad(|r| r.barrier_rate = Some(-1.0), "barrier_rate");
         bad(|r| r.set = vec!["k_v".into()], "set");
         bad(|r| r.set = vec!["k_v=1".into(), "k_v=2".into()], "set");
-        bad(|r| r.set = vec!["k_v=-1".into()], "k_v");
+        bad(|r| r.set = vec!["k_v=-1".into()], "params.k_v");
         bad(
             |r| {
                 r.set = vec!["k_v=1".into()];
