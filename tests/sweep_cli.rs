@@ -247,7 +247,7 @@ fn set_changes_every_scenario_and_is_checked_as_a_file_is() {
     );
     refused(
         &["sweep", "--set", "k_a=5", "--grid", "k_a=5,6"],
-        &["k_a", "--set and --grid"],
+        &["k_a", "given by both set and grid"],
     );
     refused(
         &["sweep", "--family", "formation", "--set", "side=50"],
