@@ -63,6 +63,29 @@ pub struct Evaluation {
     pub robot_keep: f64,
     /// The virtual obstacle, when neighbours are within the avoidance range.
     pub virtual_obstacle: Option<DVec2>,
+    /// The factor `s ≤ 1` by which the turn-rate limit slowed the command to keep its
+    /// curvature ([`saturate`]): `ω_max/|ω|`, or less where `v_max` then binds too; 1 while
+    /// the turn-rate limit does not bind.
+    pub slowed: f64,
+}
+
+impl Evaluation {
+    /// The robot's pace as its neighbours take it ([`crate::swarm::Neighbour::speed`]): its
+    /// speed `|v|`, and while the turn-rate limit slows it to keep its curvature, the speed
+    /// before that slowing, `|v|/s`. A robot that slows to turn keeps its path and returns to
+    /// its pace after the turn; taken at its slowed speed it would count as at rest for its
+    /// neighbours, and they would go round it as round a parked robot
+    /// (docs/notes-on-the-paper.md §10).
+    #[inline]
+    #[must_use]
+    pub fn pace(&self) -> f64 {
+        let speed = self.command.v.abs();
+        if self.slowed > 0.0 && self.slowed < 1.0 {
+            speed / self.slowed
+        } else {
+            speed
+        }
+    }
 }
 
 /// `atan(y/x)` with the limits the ratio takes: `±π/2` for `x = 0`, and 0 for a zero vector.
@@ -308,8 +331,17 @@ where
     };
     let omega = -params.k_omega * keep_c * keep_o * err.theta + params.k_a * delta;
 
+    let command = saturate(params, Command { v, omega });
+    // The speed the limits leave without the turn-rate limit's slowing, against which it is
+    // taken.
+    let paced = params.v_max.map_or(v, |m| v.clamp(-m, m));
     Evaluation {
-        command: saturate(params, Command { v, omega }),
+        command,
+        slowed: if command.v == paced {
+            1.0
+        } else {
+            command.v / paced
+        },
         field,
         goal_field: goal_world,
         obstacle_keep: keep_o,
@@ -318,13 +350,26 @@ where
     }
 }
 
-/// Applies `|v| ≤ v_max` and `|ω| ≤ ω_max` when they are set.
+/// The command `c` within the robot's limits `|ω| ≤ ω_max` and `|v| ≤ v_max`, when they are
+/// set (docs/notes-on-the-paper.md §10).
+///
+/// A turn rate beyond `ω_max` scales the whole command by `s = ω_max/|ω|`: `(s·v, s·ω)` has the
+/// curvature `ω/v` the field prescribes, so the robot keeps to the path of the unlimited
+/// controller and only takes longer along it (for one robot among static obstacles, the same
+/// integral curve in time rescaled by `s`). The speed is then clamped into `v_max` with the
+/// turn rate kept: the heading loop `ω` is the paper's, and a slower robot only turns more per
+/// metre than the field asks, never less. Without `ω_max` this is the clamp of `v` alone, and
+/// without either the command itself.
 #[inline]
 #[must_use]
 pub fn saturate(params: &Params, c: Command) -> Command {
+    let (v, omega) = match params.omega_max {
+        Some(m) if c.omega.abs() > m => (c.v * (m / c.omega.abs()), c.omega.clamp(-m, m)),
+        _ => (c.v, c.omega),
+    };
     Command {
-        v: params.v_max.map_or(c.v, |m| c.v.clamp(-m, m)),
-        omega: params.omega_max.map_or(c.omega, |m| c.omega.clamp(-m, m)),
+        v: params.v_max.map_or(v, |m| v.clamp(-m, m)),
+        omega,
     }
 }
 
@@ -406,6 +451,18 @@ mod tests {
             &p,
             Command {
                 v: -7.0,
+                omega: 3.0,
+            },
+        );
+        // The turn rate 3 is six times ω_max: the speed drops by the same factor to −7/6,
+        // within v_max, and keeps the curvature ω/v (to the round-off of one division).
+        assert_eq!(c.omega, 0.5);
+        crate::testing::assert_close!(c.v, -7.0 / 6.0, 1e-15);
+        crate::testing::assert_close!(c.omega / c.v, 3.0 / -7.0, 1e-15);
+        let c = saturate(
+            &p,
+            Command {
+                v: -70.0,
                 omega: 3.0,
             },
         );
