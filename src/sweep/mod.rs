@@ -29,5 +29,5 @@ mod summary;
 
 pub use generate::{formation_scenario, random_scenario, scenario, slots, Layout};
 pub use outcome::{Outcome, RecipeKey};
-pub use recipe::{Family, Recipe, DT};
+pub use recipe::{Family, Limits, Recipe, DT};
 pub use summary::{sweep, Failure, Quantiles, Summary};
