@@ -63,29 +63,6 @@ pub struct Evaluation {
     pub robot_keep: f64,
     /// The virtual obstacle, when neighbours are within the avoidance range.
     pub virtual_obstacle: Option<DVec2>,
-    /// The factor `s ≤ 1` by which the turn-rate limit slowed the command to keep its
-    /// curvature ([`saturate`]): `ω_max/|ω|`, or less where `v_max` then binds too; 1 while
-    /// the turn-rate limit does not bind.
-    pub slowed: f64,
-}
-
-impl Evaluation {
-    /// The robot's pace as its neighbours take it ([`crate::swarm::Neighbour::speed`]): its
-    /// speed `|v|`, and while the turn-rate limit slows it to keep its curvature, the speed
-    /// before that slowing, `|v|/s`. A robot that slows to turn keeps its path and returns to
-    /// its pace after the turn; taken at its slowed speed it would count as at rest for its
-    /// neighbours, and they would go round it as round a parked robot
-    /// (docs/notes-on-the-paper.md §10).
-    #[inline]
-    #[must_use]
-    pub fn pace(&self) -> f64 {
-        let speed = self.command.v.abs();
-        if self.slowed > 0.0 && self.slowed < 1.0 {
-            speed / self.slowed
-        } else {
-            speed
-        }
-    }
 }
 
 /// `atan(y/x)` with the limits the ratio takes: `±π/2` for `x = 0`, and 0 for a zero vector.
@@ -267,14 +244,7 @@ where
     let range = pair_range(params.avoid_radius, eps);
     let me = Approach {
         position: pose.p,
-        // With a bounded turn rate the heading lags the field by up to π/ω_max seconds, and
-        // where it points is no guide to where the robot goes: the exit asks where the field
-        // leads (docs/notes-on-the-paper.md §10).
-        motion: if params.omega_max.is_some() {
-            gp
-        } else {
-            motion
-        },
+        motion,
         field: gp,
         // err.p = R(θ_d)ᵀ(p − p_d) with θ_d = θ − θ̃.
         goal_error: err.p,
@@ -338,17 +308,8 @@ where
     };
     let omega = -params.k_omega * keep_c * keep_o * err.theta + params.k_a * delta;
 
-    let command = saturate(params, Command { v, omega });
-    // The speed the limits leave without the turn-rate limit's slowing, against which it is
-    // taken.
-    let paced = params.v_max.map_or(v, |m| v.clamp(-m, m));
     Evaluation {
-        command,
-        slowed: if command.v == paced {
-            1.0
-        } else {
-            command.v / paced
-        },
+        command: saturate(params, Command { v, omega }),
         field,
         goal_field: goal_world,
         obstacle_keep: keep_o,

@@ -285,7 +285,7 @@ impl Simulation {
         // lets the other threads fall asleep, to be woken after it; on one thread, it is a
         // pass over the robots fewer.
         let advance = |(i, (((r, c), chord), speed)): (usize, Advanced<'_>)| {
-            *speed = r.last.pace();
+            *speed = r.last.command.v.abs();
             r.pose = integrate_along(r.pose, *c, dt, *chord);
             // Continued while the robot follows its goal field; back on the principal branch
             // while it circles robots, where the attitude feedback is faded out and the heading
