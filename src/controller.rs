@@ -244,7 +244,14 @@ where
     let range = pair_range(params.avoid_radius, eps);
     let me = Approach {
         position: pose.p,
-        motion,
+        // With a bounded turn rate the heading lags the field by up to π/ω_max seconds, and
+        // where it points is no guide to where the robot goes: the exit asks where the field
+        // leads (docs/notes-on-the-paper.md §10).
+        motion: if params.omega_max.is_some() {
+            gp
+        } else {
+            motion
+        },
         field: gp,
         // err.p = R(θ_d)ᵀ(p − p_d) with θ_d = θ − θ̃.
         goal_error: err.p,
