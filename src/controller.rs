@@ -244,7 +244,14 @@ where
     let range = pair_range(params.avoid_radius, eps);
     let me = Approach {
         position: pose.p,
-        motion,
+        // With a bounded turn rate the heading lags the field by up to π/ω_max seconds, and
+        // where it points is no guide to where the robot goes: the exit asks where the field
+        // leads (docs/notes-on-the-paper.md §10).
+        motion: if params.omega_max.is_some() {
+            gp
+        } else {
+            motion
+        },
         field: gp,
         // err.p = R(θ_d)ᵀ(p − p_d) with θ_d = θ − θ̃.
         goal_error: err.p,
@@ -318,13 +325,26 @@ where
     }
 }
 
-/// Applies `|v| ≤ v_max` and `|ω| ≤ ω_max` when they are set.
+/// The command `c` within the robot's limits `|ω| ≤ ω_max` and `|v| ≤ v_max`, when they are
+/// set (docs/notes-on-the-paper.md §10).
+///
+/// A turn rate beyond `ω_max` scales the whole command by `s = ω_max/|ω|`: `(s·v, s·ω)` has the
+/// curvature `ω/v` the field prescribes, so the robot keeps to the path of the unlimited
+/// controller and only takes longer along it (for one robot among static obstacles, the same
+/// integral curve in time rescaled by `s`). The speed is then clamped into `v_max` with the
+/// turn rate kept: the heading loop `ω` is the paper's, and a slower robot only turns more per
+/// metre than the field asks, never less. Without `ω_max` this is the clamp of `v` alone, and
+/// without either the command itself.
 #[inline]
 #[must_use]
 pub fn saturate(params: &Params, c: Command) -> Command {
+    let (v, omega) = match params.omega_max {
+        Some(m) if c.omega.abs() > m => (c.v * (m / c.omega.abs()), c.omega.clamp(-m, m)),
+        _ => (c.v, c.omega),
+    };
     Command {
-        v: params.v_max.map_or(c.v, |m| c.v.clamp(-m, m)),
-        omega: params.omega_max.map_or(c.omega, |m| c.omega.clamp(-m, m)),
+        v: params.v_max.map_or(v, |m| v.clamp(-m, m)),
+        omega,
     }
 }
 
@@ -406,6 +426,18 @@ mod tests {
             &p,
             Command {
                 v: -7.0,
+                omega: 3.0,
+            },
+        );
+        // The turn rate 3 is six times ω_max: the speed drops by the same factor to −7/6,
+        // within v_max, and keeps the curvature ω/v (to the round-off of one division).
+        assert_eq!(c.omega, 0.5);
+        crate::testing::assert_close!(c.v, -7.0 / 6.0, 1e-15);
+        crate::testing::assert_close!(c.omega / c.v, 3.0 / -7.0, 1e-15);
+        let c = saturate(
+            &p,
+            Command {
+                v: -70.0,
                 omega: 3.0,
             },
         );

@@ -80,6 +80,38 @@ pub const PRESETS: &[Preset] = &[
         summary: "Teaching: two robots meet head on and pass each other (r_ij = 1), at up to 2 m/s and 1 rad/s, T = 60 s",
         build: teach_two_robots,
     },
+    // The "real robot" presets: the examples above with the limits of a small
+    // differential-drive robot ([`real_robot`]).
+    Preset {
+        name: "real-example4-obstacle-formation",
+        summary: "Example 4 with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
+        build: || real_robot(example4(), 60.0),
+    },
+    Preset {
+        name: "real-table1-free-space",
+        summary: "Example 1 / Table I with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), 90 s",
+        build: || real_robot(table1(), 90.0),
+    },
+    Preset {
+        name: "real-table2-obstacles",
+        summary: "Example 2 / Table II with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
+        build: || real_robot(table2(), 60.0),
+    },
+    Preset {
+        name: "real-example3-line-swap",
+        summary: "Example 3, scenario 1 with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 90 s",
+        build: || real_robot(example3_line(), 90.0),
+    },
+    Preset {
+        name: "real-example3-circle-swap",
+        summary: "Example 3, scenario 2 with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
+        build: || real_robot(example3_circle(), 60.0),
+    },
+    Preset {
+        name: "real-formation-gap-grid",
+        summary: "The gap into a grid with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 180 s",
+        build: || real_robot(formation_gap_grid(), 180.0),
+    },
 ];
 
 /// The preset shown when nothing else is asked for.
@@ -371,6 +403,48 @@ fn example4() -> Scenario {
             influence: 10.0,
         }],
     }
+}
+
+/// The "real robot" the `real-` presets carry: a small differential-drive robot (the
+/// TurtleBot3 Burger's published limits: 0.22 m/s, 2.84 rad/s, a footprint of radius
+/// 0.105 m) scaled so that its footprint is the scene's safe radius `r_ij`.
+/// Scaling lengths keeps turn rates and speeds in footprints per second: `v_max` is
+/// `0.22/0.105 ≈ 2.1` safe radii per second and `ω_max` is 2.84 rad/s whatever the scale.
+pub const REAL_ROBOT: RealRobot = RealRobot {
+    speed: 0.22,
+    turn_rate: 2.84,
+    radius: 0.105,
+};
+
+/// A robot's limits as its maker gives them, in metres and seconds ([`REAL_ROBOT`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RealRobot {
+    /// Top speed (m/s).
+    pub speed: f64,
+    /// Top turn rate (rad/s).
+    pub turn_rate: f64,
+    /// Radius of its footprint (m).
+    pub radius: f64,
+}
+
+impl RealRobot {
+    /// `(v_max, ω_max)` of this robot scaled so that its footprint is `safe_radius` long.
+    #[must_use]
+    pub fn limits(&self, safe_radius: f64) -> (f64, f64) {
+        (self.speed * safe_radius / self.radius, self.turn_rate)
+    }
+}
+
+/// `s` with the limits of [`REAL_ROBOT`] scaled to its safe radius, run for `duration` s (the
+/// limited robots take longer than the paper's `T`), named as the original with "(a small
+/// robot's limits)".
+fn real_robot(mut s: Scenario, duration: f64) -> Scenario {
+    let (v_max, omega_max) = REAL_ROBOT.limits(s.params.safe_radius);
+    s.params.v_max = Some(v_max);
+    s.params.omega_max = Some(omega_max);
+    s.duration = duration;
+    s.name = format!("{} (a small robot's limits)", s.name);
+    s
 }
 
 #[cfg(test)]

@@ -227,9 +227,17 @@ fn steer(
             free_step,
         );
     }
+    let turned = c.omega + params.k_a * held * FRAC_PI_2;
     let omega = turn_rate(params, c.omega, held);
+    // A left turn that `ω_max` cuts slows the robot by the same factor, so that it keeps the
+    // turning radius the turn asks for (`controller::saturate`, docs/notes-on-the-paper.md §10).
+    let v = if omega == turned {
+        c.v
+    } else {
+        c.v * (omega / turned).abs()
+    };
     let step = motion(h, omega, dt);
-    let v = limits(step.chord).clamp(c.v);
+    let v = limits(step.chord).clamp(v);
     (Command { v, omega }, step)
 }
 

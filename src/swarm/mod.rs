@@ -97,7 +97,9 @@ pub const AT_REST_RATIO: f64 = 0.1;
 pub struct Approach {
     /// Its position `p_i`.
     pub position: DVec2,
-    /// Its direction of motion under the goal field (heading times the sign of the speed).
+    /// Its direction of motion under the goal field (heading times the sign of the speed);
+    /// for a robot with a bounded turn rate, its field `Γ_P`, where it goes once it has turned
+    /// (docs/notes-on-the-paper.md §10).
     pub motion: DVec2,
     /// The field it would follow without robots to avoid (`Γ_P`, world frame).
     pub field: DVec2,

@@ -1,7 +1,8 @@
 //! The scenarios of a sweep: scenario `seed` of a recipe depends on the seed alone.
 
-use super::recipe::{Family, Recipe};
+use super::recipe::{Family, Limits, Recipe};
 use crate::obstacle::Obstacle;
+use crate::params::Params;
 use crate::scenario::{RobotSpec, Scenario};
 use glam::DVec2;
 use rand::{Rng, SeedableRng};
@@ -19,6 +20,22 @@ pub fn scenario(recipe: &Recipe, seed: u64) -> Option<Scenario> {
         Family::Formation => formation_scenario(recipe, seed),
     }
 }
+
+/// The scenario's parameters: the recipe's, with the limits drawn for `seed` when the recipe
+/// draws them ([`Limits`]), from a generator of their own so that the scene is drawn alike.
+fn params_of(recipe: &Recipe, seed: u64) -> Params {
+    let mut params = recipe.params;
+    if let Some(Limits { v_max, omega_max }) = &recipe.limits {
+        let mut rng = Pcg64::seed_from_u64(seed ^ LIMITS_STREAM);
+        params.v_max = Some(rng.random_range(v_max.clone()));
+        params.omega_max = Some(rng.random_range(omega_max.clone()));
+    }
+    params
+}
+
+/// Mixed into a scenario's seed for the generator of its limits ([`params_of`]), so that the
+/// limits are not drawn from the scene's stream.
+const LIMITS_STREAM: u64 = 0x11A1_75ED_0F11_4175;
 
 /// How the goal slots of a [`formation_scenario`] are laid out.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -123,15 +140,17 @@ pub fn formation_scenario(recipe: &Recipe, seed: u64) -> Option<Scenario> {
     };
     Some(scene(
         recipe,
+        seed,
         format!("formation scenario ({name}), seed {seed}"),
         robots,
         obstacles,
     ))
 }
 
-/// A scenario of `recipe` (its duration, step and parameters).
+/// Scenario `seed` of `recipe` (its duration, step and parameters, with the limits it draws).
 fn scene(
     recipe: &Recipe,
+    seed: u64,
     name: String,
     robots: Vec<RobotSpec>,
     obstacles: Vec<Obstacle>,
@@ -141,7 +160,7 @@ fn scene(
         bounds: None,
         duration: recipe.duration,
         dt: recipe.dt,
-        params: recipe.params,
+        params: params_of(recipe, seed),
         independent: false,
         robots,
         obstacles,
@@ -198,6 +217,7 @@ pub fn random_scenario(recipe: &Recipe, seed: u64) -> Option<Scenario> {
     let robots = with_headings(&starts, &goals, &mut rng);
     Some(scene(
         recipe,
+        seed,
         format!("random scenario, seed {seed}"),
         robots,
         obstacles,
@@ -296,6 +316,47 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// A recipe that draws the limits draws them within its ranges, for each scenario anew,
+    /// and leaves the scene as the recipe without limits draws it; fixed limits are the
+    /// values asked for.
+    #[test]
+    fn limits_are_drawn_apart_from_the_scene() {
+        for family in [Family::Random, Family::Dense, Family::Formation] {
+            let plain = Recipe::of(family);
+            let drawn = Recipe {
+                limits: Some(Limits {
+                    v_max: 1.0..=5.0,
+                    omega_max: 0.5..=3.0,
+                }),
+                ..plain.clone()
+            };
+            let mut seen = std::collections::BTreeSet::new();
+            for seed in 0..20 {
+                let a = scenario(&plain, seed).expect("a scene");
+                let b = scenario(&drawn, seed).expect("a scene");
+                let (v, w) = (b.params.v_max.unwrap(), b.params.omega_max.unwrap());
+                assert!(
+                    (1.0..=5.0).contains(&v) && (0.5..=3.0).contains(&w),
+                    "{v} {w}"
+                );
+                seen.insert(v.to_bits());
+                assert_eq!((a.params.v_max, a.params.omega_max), (None, None));
+                let unlimited = Scenario {
+                    params: a.params,
+                    ..b.clone()
+                };
+                assert_eq!(unlimited, a, "seed {seed}: the scene is the same");
+                b.validate().expect("a limited scenario is valid");
+            }
+            assert_eq!(seen.len(), 20, "a limit for each scenario");
+            let fixed = scenario(&plain.clone().limited(2.0, 1.0), 3).expect("a scene");
+            assert_eq!(
+                (fixed.params.v_max, fixed.params.omega_max),
+                (Some(2.0), Some(1.0))
+            );
         }
     }
 

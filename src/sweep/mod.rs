@@ -42,7 +42,7 @@ pub use generate::{formation_scenario, random_scenario, scenario, slots, Layout}
 pub use merge::{Merge, MergeError};
 pub use outcome::{Arrival, Closest, Outcome, RecipeKey, Sweep};
 pub use plan::{nothing_ran, Plan, Request, MAX_SWEEP};
-pub use recipe::{Family, Recipe, DT};
+pub use recipe::{Family, Limits, Recipe, DT};
 pub use settings::{
     label, points, set, value_of, with, Axis, Values, MAX_AXIS, MAX_POINTS, RECIPE_NAMES,
 };

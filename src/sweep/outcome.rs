@@ -33,6 +33,10 @@ pub struct RecipeKey {
     /// The values set for every scenario (`dvf sweep --set`), by name.
     #[serde(default, skip_serializing_if = "Values::is_empty")]
     pub set: Values,
+    /// The ranges the robots' limits are drawn from ([`Recipe::limits`]):
+    /// `[[v_max min, max], [ω_max min, max]]`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub limits: Option<[[f64; 2]; 2]>,
 }
 
 impl RecipeKey {
@@ -48,6 +52,12 @@ impl RecipeKey {
             avoidance: recipe.params.avoidance,
             barrier_rate: recipe.params.barrier_rate,
             set: Values::new(),
+            limits: recipe.limits.as_ref().map(|l| {
+                [
+                    [*l.v_max.start(), *l.v_max.end()],
+                    [*l.omega_max.start(), *l.omega_max.end()],
+                ]
+            }),
         }
     }
 }

@@ -53,6 +53,34 @@ pub struct Recipe {
     pub dt: f64,
     /// The method's parameters.
     pub params: Params,
+    /// The robots' limits `v_max` and `ω_max`, drawn for each scenario; `None` keeps those of
+    /// `params`.
+    pub limits: Option<Limits>,
+}
+
+/// The ranges a sweep draws the robots' limits from ([`Recipe::limits`]), uniformly and for
+/// each scenario (all its robots alike). A range of one value fixes the limit.
+///
+/// They are drawn from a generator of their own, seeded by the scenario's seed, after the scene:
+/// scenario `k` of a recipe with limits is scenario `k` of the same recipe without them, but
+/// for `params.v_max` and `params.omega_max`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Limits {
+    /// `v_max` (m/s), greater than 0.
+    pub v_max: RangeInclusive<f64>,
+    /// `ω_max` (rad/s), greater than 0.
+    pub omega_max: RangeInclusive<f64>,
+}
+
+impl Limits {
+    /// `v_max` and `ω_max` fixed at these values.
+    #[must_use]
+    pub fn fixed(v_max: f64, omega_max: f64) -> Self {
+        Self {
+            v_max: v_max..=v_max,
+            omega_max: omega_max..=omega_max,
+        }
+    }
 }
 
 impl Default for Recipe {
@@ -71,6 +99,7 @@ impl Default for Recipe {
             duration: 120.0,
             dt: DT,
             params: Params::default(),
+            limits: None,
         }
     }
 }
@@ -101,6 +130,15 @@ impl Recipe {
             ring_width: 1.0..=3.0,
             duration: 300.0,
             ..Self::default()
+        }
+    }
+
+    /// This recipe with the robots' limits fixed at `v_max` and `omega_max` ([`Limits::fixed`]).
+    #[must_use]
+    pub fn limited(self, v_max: f64, omega_max: f64) -> Self {
+        Self {
+            limits: Some(Limits::fixed(v_max, omega_max)),
+            ..self
         }
     }
 

@@ -10,6 +10,7 @@ import {
   drawObstacleDisc,
   drawRobot,
   drawSafeDisc,
+  drawSaturatedRing,
   drawSenseCircle,
   drawStart,
   drawVirtualObstacle,
@@ -111,6 +112,13 @@ export function buildLegend(list) {
     ['virtual obstacle, R_c', (c, x, y) => drawVirtualObstacle(c, x, y, 9)],
     ['sensing radius R_s', (c, x, y) => drawSenseCircle(c, x, y, 10)],
     ['violation: closer than 2·r_ij, or inside r_o', (c, x, y) => drawViolationGlyph(c, x, y, 9)],
+    [
+      'command at v_max or ω_max',
+      (c, x, y) => {
+        drawRobot(c, x, y, 0.5, n);
+        drawSaturatedRing(c, x, y, 10);
+      },
+    ],
     ['field Γ of the inspected robot', drawArrowGlyph],
     ['integral curve from θ(0)', drawCurveGlyph],
     ['handle: drag to turn / resize', (c, x, y) => drawHandle(c, x, y)],

@@ -1,5 +1,5 @@
 // The marks of the scene, one function each: robot, start, goal, safe disc, obstacle disc and
-// influence ring, virtual obstacle, sensing circle, drag handle, arrowhead. The scene, the
+// influence ring, virtual obstacle, sensing circle, saturation ring, drag handle, arrowhead. The scene, the
 // crowd and the legend draw with these, so a mark looks the same everywhere.
 
 import {
@@ -18,6 +18,7 @@ import {
   ROBOT_LENGTH_PX,
   ROBOT_WIDTH_PX,
   SAFE_DASH_PX,
+  SATURATED_COLOUR,
   SENSE_COLOUR,
   START_ALPHA,
   VIRTUAL_OBSTACLE_COLOUR,
@@ -176,6 +177,23 @@ export function drawVirtualObstacles(ctx, points, rc) {
 /** One virtual obstacle glyph at (x, y) with ring radius `rc` (CSS px). */
 export function drawVirtualObstacle(ctx, x, y, rc) {
   drawVirtualObstacles(ctx, [[x, y]], rc);
+}
+
+/**
+ * Rings of `radius` (CSS px) about the robots at screen `points` ([x, y] each) whose command
+ * is at a limit.
+ */
+export function drawSaturated(ctx, points, radius = ROBOT_LENGTH_PX * 0.75) {
+  ctx.beginPath();
+  for (const [x, y] of points) addCircle(ctx, x, y, radius);
+  ctx.lineWidth = 2;
+  ctx.strokeStyle = SATURATED_COLOUR;
+  ctx.stroke();
+}
+
+/** One saturation ring of `radius` (CSS px) at (x, y). */
+export function drawSaturatedRing(ctx, x, y, radius) {
+  drawSaturated(ctx, [[x, y]], radius);
 }
 
 /** Screen position of the heading handle of a body at (x, y) heading `theta`. */

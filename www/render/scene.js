@@ -11,6 +11,7 @@ import {
   drawHandle,
   drawInfluence,
   drawObstacleDisc,
+  drawSaturated,
   drawVirtualObstacles,
   handlePoint,
   paintBodies,
@@ -181,6 +182,7 @@ function drawRobots(ctx, view, scene) {
     }
     if (!crowd) drawVirtualObstaclesOf(ctx, view, scene);
   }
+  if (!crowd) drawSaturatedOf(ctx, view, scene);
   ctx.lineJoin = 'miter';
   // A crowd's small bodies go without their outline, as on its canvas (render/crowd.js).
   const outline = !crowd || glyph * ROBOT_LENGTH_PX >= CROWD_OUTLINE_MIN_PX;
@@ -256,6 +258,25 @@ function drawVirtualObstaclesOf(ctx, view, scene) {
     drawn.push([x, y]);
   }
   if (drawn.length) drawVirtualObstacles(ctx, drawn, rc);
+}
+
+/**
+ * A ring about each robot whose command is at a limit of the scenario's (|v| = v_max or
+ * |ω| = ω_max): the controller clamps to the limit exactly, so a saturated command equals it.
+ */
+function drawSaturatedOf(ctx, view, scene) {
+  const { v_max: vMax, omega_max: omegaMax } = scene.scenario.params;
+  if (vMax == null && omegaMax == null) return;
+  const st = scene.status;
+  const p = scene.poses;
+  const at = [];
+  for (let i = 0; i * STATUS_STRIDE < st.length; i++) {
+    const v = Math.abs(st[i * STATUS_STRIDE + STATUS.v]);
+    const omega = Math.abs(st[i * STATUS_STRIDE + STATUS.omega]);
+    if ((vMax != null && v >= vMax) || (omegaMax != null && omega >= omegaMax))
+      at.push([view.sx(p[i * POSE_STRIDE]), view.sy(p[i * POSE_STRIDE + 1])]);
+  }
+  if (at.length) drawSaturated(ctx, at);
 }
 
 /** The selected robot (or its goal): a ring and the heading handles of body and goal. */

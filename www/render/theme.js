@@ -53,6 +53,8 @@ export let FIELD_COLOUR = '#94a3b8';
 export let CURVE_COLOUR = '#7c3aed';
 export const VIRTUAL_OBSTACLE_COLOUR = '#dc2626';
 export const SENSE_COLOUR = 'rgba(37, 99, 235, 0.35)';
+/** The ring of a robot whose command is at its limit, v_max or ω_max. */
+export const SATURATED_COLOUR = '#d97706';
 export let HANDLE_FILL = '#ffffff';
 export let HANDLE_STROKE = '#111827';
 export let SELECTION_COLOUR = '#2563eb';
