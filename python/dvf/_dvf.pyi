@@ -43,35 +43,26 @@ def command(
     (robots, 2). `params` is a JSON object; obstacles are rows [x, y, r_o, R_o]; robot i
     senses the next counts[i] rows [x, y] of `neighbours`."""
 
-def sweep(
-    count: int,
-    seed: int = 0,
-    family: str = "random",
-    robots: Optional[Tuple[int, int]] = None,
-    obstacles: Optional[Tuple[int, int]] = None,
-    spacing: Optional[Tuple[float, float]] = None,
-    avoidance: str = "exit",
-    barrier_rate: Optional[float] = 5.0,
-    set: List[str] = ...,
-    grid: List[str] = ...,
-) -> str:
-    """The summary JSON of a sweep (what `dvf sweep` prints)."""
+class SweepPlan:
+    """A sweep's options, checked (ValueError naming the field): `dvf sweep`'s."""
 
-def sweep_shard(
-    shard: int,
-    shards: int,
-    count: int,
-    seed: int = 0,
-    family: str = "random",
-    robots: Optional[Tuple[int, int]] = None,
-    obstacles: Optional[Tuple[int, int]] = None,
-    spacing: Optional[Tuple[float, float]] = None,
-    avoidance: str = "exit",
-    barrier_rate: Optional[float] = 5.0,
-    set: List[str] = ...,
-    grid: List[str] = ...,
-) -> List[str]:
-    """One shard's outcomes as JSON lines (what `dvf sweep --shard K/N` prints)."""
+    def __init__(
+        self,
+        count: int,
+        seed: int = 0,
+        family: str = "random",
+        robots: Optional[Tuple[int, int]] = None,
+        obstacles: Optional[Tuple[int, int]] = None,
+        spacing: Optional[Tuple[float, float]] = None,
+        avoidance: str = "exit",
+        barrier_rate: Optional[float] = 5.0,
+        set: List[str] = ...,
+        grid: List[str] = ...,
+    ) -> None: ...
+    def summary(self) -> str:
+        """The summary JSON of the sweep (what `dvf sweep` prints)."""
+    def shard(self, shard: int, shards: int) -> List[str]:
+        """One shard's outcomes as JSON lines (what `dvf sweep --shard K/N` prints)."""
 
 def merge(lines: List[str]) -> str:
     """The summary JSON of shards' outcome lines (what `dvf sweep merge` prints)."""

@@ -95,7 +95,7 @@ def sweep(
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
             raise ValueError(f"{name}: must be a whole number of at least 0, not {value!r}")
     if shard is None:
-        return _records(_dvf.sweep(int(count), int(seed), **options))
+        return _records(_dvf.SweepPlan(int(count), int(seed), **options).summary())
     if isinstance(shard, str):
         try:
             k, n = (int(part) for part in shard.split("/"))
@@ -108,7 +108,8 @@ def sweep(
             raise ValueError(f"shard: expected (k, n), not {shard!r}") from None
     if min(k, n) < 1:
         raise ValueError(f"shard: must be K/N with 1 ≤ K ≤ N, not {k}/{n}")
-    return [_records(line) for line in _dvf.sweep_shard(int(k), int(n), int(count), int(seed), **options)]
+    lines = _dvf.SweepPlan(int(count), int(seed), **options).shard(int(k), int(n))
+    return [_records(line) for line in lines]
 
 
 def sweep_shard(

@@ -159,8 +159,7 @@ fn _dvf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(field, m)?)?;
     m.add_function(wrap_pyfunction!(command::command, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep::sweep, m)?)?;
-    m.add_function(wrap_pyfunction!(sweep::sweep_shard, m)?)?;
+    m.add_class::<sweep::SweepPlan>()?;
     m.add_function(wrap_pyfunction!(sweep::merge, m)?)?;
     Ok(())
 }

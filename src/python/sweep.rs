@@ -9,35 +9,6 @@ use crate::sweep::{nothing_ran, Merge, Plan, Request, Summaries};
 use crate::Error;
 use pyo3::prelude::*;
 
-/// The plan of the options, checked; a refusal names the option's field.
-#[allow(clippy::too_many_arguments)]
-fn plan(
-    count: usize,
-    seed: u64,
-    family: &str,
-    robots: Option<(usize, usize)>,
-    obstacles: Option<(usize, usize)>,
-    spacing: Option<(f64, f64)>,
-    avoidance: &str,
-    barrier_rate: Option<f64>,
-    set: Vec<String>,
-    grid: Vec<String>,
-) -> PyResult<Plan> {
-    Plan::new(&Request {
-        family: family.to_owned(),
-        seed,
-        count,
-        robots,
-        obstacles,
-        spacing,
-        avoidance: avoidance.to_owned(),
-        barrier_rate,
-        set,
-        grid,
-    })
-    .map_err(value_error)
-}
-
 /// The summaries as JSON, or the reason no scenario ran as a `ValueError`.
 fn summaries_json(summaries: &Summaries) -> PyResult<String> {
     match nothing_ran(summaries) {
@@ -46,89 +17,70 @@ fn summaries_json(summaries: &Summaries) -> PyResult<String> {
     }
 }
 
-/// Runs scenarios `seed … seed + count − 1` (at every grid point) on every core and returns
-/// their summary as JSON (`dvf sweep`).
-#[pyfunction]
-#[pyo3(signature = (count, seed = 0, family = "random", robots = None, obstacles = None,
-    spacing = None, avoidance = "exit", barrier_rate = Some(DEFAULT_BARRIER_RATE),
-    set = Vec::new(), grid = Vec::new()))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn sweep(
-    py: Python<'_>,
-    count: usize,
-    seed: u64,
-    family: &str,
-    robots: Option<(usize, usize)>,
-    obstacles: Option<(usize, usize)>,
-    spacing: Option<(f64, f64)>,
-    avoidance: &str,
-    barrier_rate: Option<f64>,
-    set: Vec<String>,
-    grid: Vec<String>,
-) -> PyResult<String> {
-    let plan = plan(
-        count,
-        seed,
-        family,
-        robots,
-        obstacles,
-        spacing,
-        avoidance,
-        barrier_rate,
-        set,
-        grid,
-    )?;
-    let summaries = py.detach(|| plan.summaries(|_, _, _, _| {}));
-    summaries_json(&summaries)
-}
+/// A sweep's options, checked into a [`Plan`] (a refusal names the option's field), run whole
+/// or one shard at a time.
+#[pyclass(frozen)]
+pub(crate) struct SweepPlan(Plan);
 
-/// Shard `shard` of `shards` (from 1), one outcome per scenario as a JSON line of
-/// `dvf sweep --shard`.
-#[pyfunction]
-#[pyo3(signature = (shard, shards, count, seed = 0, family = "random", robots = None,
-    obstacles = None, spacing = None, avoidance = "exit",
-    barrier_rate = Some(DEFAULT_BARRIER_RATE), set = Vec::new(), grid = Vec::new()))]
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn sweep_shard(
-    py: Python<'_>,
-    shard: usize,
-    shards: usize,
-    count: usize,
-    seed: u64,
-    family: &str,
-    robots: Option<(usize, usize)>,
-    obstacles: Option<(usize, usize)>,
-    spacing: Option<(f64, f64)>,
-    avoidance: &str,
-    barrier_rate: Option<f64>,
-    set: Vec<String>,
-    grid: Vec<String>,
-) -> PyResult<Vec<String>> {
-    let plan = plan(
-        count,
-        seed,
-        family,
-        robots,
-        obstacles,
-        spacing,
-        avoidance,
-        barrier_rate,
-        set,
-        grid,
-    )?;
-    let lines = py.detach(|| {
-        let mut lines = Vec::new();
-        plan.shard(
-            (shard, shards),
-            |_, _, _, _| {},
-            |outcome| {
-                lines.push(serde_json::to_string(&outcome).unwrap_or_default());
-                Ok::<(), Error>(())
-            },
-        )
-        .map(|()| lines)
-    });
-    lines.map_err(value_error)
+#[pymethods]
+impl SweepPlan {
+    #[new]
+    #[pyo3(signature = (count, seed = 0, family = "random", robots = None, obstacles = None,
+        spacing = None, avoidance = "exit", barrier_rate = Some(DEFAULT_BARRIER_RATE),
+        set = Vec::new(), grid = Vec::new()))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        count: usize,
+        seed: u64,
+        family: &str,
+        robots: Option<(usize, usize)>,
+        obstacles: Option<(usize, usize)>,
+        spacing: Option<(f64, f64)>,
+        avoidance: &str,
+        barrier_rate: Option<f64>,
+        set: Vec<String>,
+        grid: Vec<String>,
+    ) -> PyResult<Self> {
+        Plan::new(&Request {
+            family: family.to_owned(),
+            seed,
+            count,
+            robots,
+            obstacles,
+            spacing,
+            avoidance: avoidance.to_owned(),
+            barrier_rate,
+            set,
+            grid,
+        })
+        .map(Self)
+        .map_err(value_error)
+    }
+
+    /// Runs every scenario on every core and returns their summary as JSON (`dvf sweep`).
+    fn summary(&self, py: Python<'_>) -> PyResult<String> {
+        let summaries = py.detach(|| self.0.summaries(|_, _, _, _| {}));
+        summaries_json(&summaries)
+    }
+
+    /// Shard `shard` of `shards` (from 1), one outcome per scenario as a JSON line of
+    /// `dvf sweep --shard`.
+    fn shard(&self, py: Python<'_>, shard: usize, shards: usize) -> PyResult<Vec<String>> {
+        let lines = py.detach(|| {
+            let mut lines = Vec::new();
+            self.0
+                .shard(
+                    (shard, shards),
+                    |_, _, _, _| {},
+                    |outcome| {
+                        lines.push(serde_json::to_string(&outcome).unwrap_or_default());
+                        Ok::<(), Error>(())
+                    },
+                )
+                .map(|()| lines)
+        });
+        lines.map_err(value_error)
+    }
 }
 
 /// The summary of outcomes (JSON lines of shards, in any order), checked to be one whole
