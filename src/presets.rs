@@ -84,32 +84,32 @@ pub const PRESETS: &[Preset] = &[
     // differential-drive robot ([`real_robot`]).
     Preset {
         name: "real-example4-obstacle-formation",
-        summary: "Example 4 with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
+        summary: "Real robot, Example 4: ten robots pass an obstacle into a line, with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
         build: || real_robot(example4(), 60.0),
     },
     Preset {
         name: "real-table1-free-space",
-        summary: "Example 1 / Table I with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), 90 s",
+        summary: "Real robot, Example 1 / Table I: six goals in free space, with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), 90 s",
         build: || real_robot(table1(), 90.0),
     },
     Preset {
         name: "real-table2-obstacles",
-        summary: "Example 2 / Table II with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
+        summary: "Real robot, Example 2 / Table II: three starts around obstacles, with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
         build: || real_robot(table2(), 60.0),
     },
     Preset {
         name: "real-example3-line-swap",
-        summary: "Example 3, scenario 1 with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 90 s",
+        summary: "Real robot, Example 3, scenario 1: line to line, with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 90 s",
         build: || real_robot(example3_line(), 90.0),
     },
     Preset {
         name: "real-example3-circle-swap",
-        summary: "Example 3, scenario 2 with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
+        summary: "Real robot, Example 3, scenario 2: antipodal swap on a circle, with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 60 s",
         build: || real_robot(example3_circle(), 60.0),
     },
     Preset {
         name: "real-formation-gap-grid",
-        summary: "The gap into a grid with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 180 s",
+        summary: "Real robot, not in the paper: twelve robots through a gap into a grid, with a small robot's limits (v_max = 2.1·r_ij per s, ω_max = 2.84 rad/s), T = 180 s",
         build: || real_robot(formation_gap_grid(), 180.0),
     },
 ];

@@ -25,8 +25,9 @@ const CROWD_OPTION = 'crowd';
  */
 export function presetLabel({ name, summary }) {
   const head = summary.split(':')[0].trim();
-  // The name less its family (`example3-`, `teach-`), which the summary's head says.
-  const words = name.replace(/^(?:[a-z]+\d+-?|teach-)/, '').replace(/-/g, ' ');
+  // The name less its family (`example3-`, `teach-`, `real-example3-`), which the summary's
+  // head says.
+  const words = name.replace(/^(?:real-)?(?:[a-z]+\d+-?|teach-)?/, '').replace(/-/g, ' ');
   return words ? `${head}: ${words}` : head;
 }
 
