@@ -453,3 +453,35 @@ fn a_grid_sweep_writes_failures_by_seed_and_values() {
         .count();
     assert_eq!(Some(arrived as u64), v["groups"][0]["converged"].as_u64());
 }
+
+/// A sweep on a terminal shows how many of its scenarios have run, on standard error; on a
+/// pipe it writes nothing there.
+#[test]
+fn a_sweep_shows_its_progress_on_a_terminal_only() {
+    let args = [
+        "sweep",
+        "--count",
+        "3",
+        "--robots",
+        "2..=3",
+        "--obstacles",
+        "0..=0",
+    ];
+    let o = dvf(&args);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(o.stderr.is_empty(), "{}", stderr(&o));
+    let command = format!("{} {}", env!("CARGO_BIN_EXE_dvf"), args.join(" "));
+    let o = Command::new("script")
+        .args(["-qec", &command, "/dev/null"])
+        .env("TERM", "xterm")
+        .output()
+        .expect("script (util-linux) runs dvf on a pseudo-terminal");
+    assert_eq!(o.status.code(), Some(0));
+    let screen = String::from_utf8_lossy(&o.stdout);
+    assert!(screen.contains(" scenario "), "no progress bar: {screen:?}");
+    assert!(screen.contains("/3"), "no scenario count: {screen:?}");
+    assert!(
+        screen.contains(r#""success_rate""#),
+        "no summary: {screen:?}"
+    );
+}

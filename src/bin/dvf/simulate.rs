@@ -6,9 +6,8 @@
 
 use crate::args::SimulateArgs;
 use dvf::sim::{run_streamed, Sample, Simulation};
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::fs::File;
-use std::io::{BufWriter, IsTerminal, Write};
+use std::io::{BufWriter, Write};
 use std::path::Path;
 
 /// Runs the scenario and writes its report as one JSON line.
@@ -25,7 +24,7 @@ pub fn run(out: &mut impl Write, args: &SimulateArgs) -> Result<(), String> {
         Some(_) => usize::try_from(args.every).unwrap_or(usize::MAX),
         None => usize::MAX,
     };
-    let bar = progress(s.steps());
+    let bar = crate::progress::bar(s.steps(), "step");
     let report = run_streamed(&s, every, |sim: &Simulation, samples: &[Sample]| {
         bar.set_position(sim.steps() as u64);
         match &mut csv {
@@ -40,21 +39,6 @@ pub fn run(out: &mut impl Write, args: &SimulateArgs) -> Result<(), String> {
         csv.finish()?;
     }
     crate::write_json(out, &report)
-}
-
-/// A bar of `steps` steps on standard error when that is a terminal; hidden otherwise, so that
-/// a pipe or a log file gets no progress bytes.
-fn progress(steps: usize) -> ProgressBar {
-    if !std::io::stderr().is_terminal() {
-        return ProgressBar::hidden();
-    }
-    let bar = ProgressBar::with_draw_target(Some(steps as u64), ProgressDrawTarget::stderr());
-    if let Ok(style) =
-        ProgressStyle::with_template("{elapsed_precise} {wide_bar} step {pos}/{len}, {eta} left")
-    {
-        bar.set_style(style);
-    }
-    bar
 }
 
 /// What stops a run early: the message for standard error (a CSV that cannot be written, or

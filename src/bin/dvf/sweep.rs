@@ -31,9 +31,17 @@ pub fn run(out: &mut impl Write, args: SweepArgs) -> Result<(), String> {
         std::fs::create_dir_all(dir)
             .map_err(|e| format!("{}: cannot create: {e}", dir.display()))?;
     }
+    // A bar of the scenarios this process runs, on a terminal only.
+    let bar = crate::progress::bar(
+        args.shard.map_or(plan.total(), |(k, n)| {
+            plan.total().saturating_sub(k - 1).div_ceil(n)
+        }),
+        "scenario",
+    );
     // Scenarios run on every core: the first write error is kept for the end.
     let write_error = Mutex::new(None);
     let write_failure = |values: &Values, s: u64, scenario: &Scenario, report: &Report| {
+        bar.inc(1);
         if let Some(dir) = &write {
             write_if_failed(dir, &file_name(s, values), scenario, report, &write_error);
         }
@@ -48,6 +56,7 @@ pub fn run(out: &mut impl Write, args: SweepArgs) -> Result<(), String> {
         crate::write_json(out, &summaries)?;
         ran(&summaries)?;
     }
+    bar.finish_and_clear();
     match write_error.into_inner().unwrap_or_else(|p| p.into_inner()) {
         Some(e) => Err(e),
         None => Ok(()),
