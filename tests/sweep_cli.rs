@@ -485,3 +485,31 @@ fn a_sweep_shows_its_progress_on_a_terminal_only() {
         "no summary: {screen:?}"
     );
 }
+
+/// A sweep where some scenarios were skipped succeeds, and says on standard error how many of
+/// those asked for its summary leaves out.
+#[test]
+fn a_sweep_that_skipped_some_says_how_many() {
+    let o = dvf(&[
+        "sweep",
+        "--count",
+        "4",
+        "--robots",
+        "200..=1000",
+        "--set",
+        "duration=1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let summary: Value = serde_json::from_str(stdout(&o).trim()).expect("one JSON summary");
+    let skipped = summary["skipped"].as_u64().expect("skipped is a count");
+    let ran = summary["scenarios"].as_u64().expect("scenarios is a count");
+    assert!(skipped > 0 && ran > 0, "this sweep skips some: {summary}");
+    let warning = stderr(&o);
+    assert!(
+        warning.contains(&format!(
+            "{skipped} of {} scenarios were skipped",
+            skipped + ran
+        )),
+        "{warning}"
+    );
+}

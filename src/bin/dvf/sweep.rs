@@ -74,8 +74,22 @@ impl From<dvf::Error> for Failed {
 
 /// An error unless some scenario ran at every point: a sweep of skipped scenarios has nothing
 /// to report.
+/// A sweep where only some were skipped succeeds, with a warning on standard error that says
+/// how many, so that a rate over fewer scenarios than asked for is not read as the whole.
 fn ran(summaries: &Summaries) -> Result<(), String> {
-    nothing_ran(summaries).map_or(Ok(()), Err)
+    if let Some(why) = nothing_ran(summaries) {
+        return Err(why);
+    }
+    let (skipped, asked) = summaries.all().iter().fold((0, 0), |(k, n), (_, s)| {
+        (k + s.skipped, n + s.skipped + s.scenarios)
+    });
+    if skipped > 0 {
+        eprintln!(
+            "warning: {skipped} of {asked} scenarios were skipped because their robots or obstacles could not be placed; the summary covers the other {}",
+            asked - skipped
+        );
+    }
+    Ok(())
 }
 
 /// The file a failing scenario is written to: `seed-S.json`, or with a grid
