@@ -9,9 +9,11 @@
 
 use serde_json::Value;
 use std::f64::consts::{FRAC_PI_2, PI};
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-use std::sync::atomic::{AtomicUsize, Ordering};
+mod common;
+
+use common::{dvf, stderr, stdout, TempFile};
+use std::path::PathBuf;
+use std::process::Command;
 
 /// Table I robots, in preset order: all start at (0, 0, 0).
 const TABLE1_GOALS: [[f64; 3]; 6] = [
@@ -41,23 +43,6 @@ const TABLE1_JSON: &str = r#"{
   ]
 }"#;
 
-fn dvf(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dvf"))
-        .args(args)
-        // A panic would then also print a backtrace hint, which the error tests look for.
-        .env("RUST_BACKTRACE", "1")
-        .output()
-        .expect("the dvf binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8(o.stderr.clone()).expect("stderr is UTF-8")
-}
-
 /// Runs `dvf args`, asserts success and an empty stderr, and parses stdout as one JSON value.
 fn dvf_json(args: &[&str]) -> Value {
     let o = dvf(args);
@@ -79,39 +64,6 @@ fn dvf_json(args: &[&str]) -> Value {
         "dvf {args:?} must print one line of JSON"
     );
     serde_json::from_str(&text).expect("stdout is one JSON value")
-}
-
-/// A file in the system temp directory with a name unique to this process and call; removed
-/// when dropped.
-struct TempFile(PathBuf);
-
-impl TempFile {
-    fn new(stem: &str, ext: &str) -> Self {
-        static COUNTER: AtomicUsize = AtomicUsize::new(0);
-        let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-        let name = format!("dvf-cli-test-{}-{n}-{stem}.{ext}", std::process::id());
-        Self(std::env::temp_dir().join(name))
-    }
-
-    fn with_text(stem: &str, text: &str) -> Self {
-        let f = Self::new(stem, "json");
-        std::fs::write(&f.0, text).expect("write the scenario file");
-        f
-    }
-
-    fn path(&self) -> &Path {
-        &self.0
-    }
-
-    fn arg(&self) -> &str {
-        self.0.to_str().expect("temp path is UTF-8")
-    }
-}
-
-impl Drop for TempFile {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.0);
-    }
 }
 
 fn num(v: &Value) -> f64 {

@@ -5,59 +5,25 @@
 // The binary exists natively and with the `cli` feature only.
 #![cfg(all(not(target_arch = "wasm32"), feature = "cli"))]
 
+mod common;
+
+use common::{dvf, TempFile, DVF};
 use serde_json::Value;
 use std::fs::File;
 use std::io::Write;
-use std::path::PathBuf;
-use std::process::{Command, Output, Stdio};
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-const DVF: &str = env!("CARGO_BIN_EXE_dvf");
-
-/// A path in the system temp directory unique to this process and call, removed when dropped.
-struct Temp(PathBuf);
-
-impl Temp {
-    fn new(stem: &str) -> Self {
-        static COUNTER: AtomicUsize = AtomicUsize::new(0);
-        let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-        let name = format!("dvf-simulate-test-{}-{n}-{stem}", std::process::id());
-        Self(std::env::temp_dir().join(name))
-    }
-    fn with_text(stem: &str, text: &str) -> Self {
-        let t = Self::new(stem);
-        std::fs::write(&t.0, text).expect("write the scenario file");
-        t
-    }
-    fn arg(&self) -> &str {
-        self.0.to_str().expect("temp path is UTF-8")
-    }
-}
-
-impl Drop for Temp {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_file(&self.0);
-    }
-}
-
-fn dvf(args: &[&str]) -> Output {
-    Command::new(DVF)
-        .args(args)
-        .output()
-        .expect("the dvf binary runs")
-}
+use std::process::{Command, Stdio};
 
 /// The crowd of `robots` (the preset `crowd-N`) run for `duration` seconds, as a file.
-fn crowd_file(robots: usize, duration: f64) -> Temp {
+fn crowd_file(robots: usize, duration: f64) -> TempFile {
     let mut s = dvf::presets::crowd(robots);
     s.duration = duration;
-    Temp::with_text("crowd.json", &s.to_json())
+    TempFile::with_text("crowd", &s.to_json())
 }
 
 /// Runs `dvf args` to its end and returns its exit code, its standard error and its peak
 /// resident memory in KiB (`ru_maxrss` of the child, reaped with `wait4`).
 fn peak_memory(args: &[&str]) -> (i32, String, i64) {
-    let err = Temp::new("stderr");
+    let err = TempFile::new("stderr", "txt");
     let child = Command::new(DVF)
         .args(args)
         .stdout(Stdio::null())
@@ -124,7 +90,7 @@ fn a_csv_path_that_cannot_be_written_is_refused_before_the_run() {
 #[test]
 fn csv_times_are_the_decimals_of_k_dt_and_every_thins_the_rows() {
     for (dt, decimals, every) in [("0.01", 2u32, 1usize), ("0.005", 3, 7)] {
-        let scenario = Temp::with_text(
+        let scenario = TempFile::with_text(
             "times.json",
             &format!(
                 r#"{{ "duration": 12, "dt": {dt},
@@ -132,7 +98,7 @@ fn csv_times_are_the_decimals_of_k_dt_and_every_thins_the_rows() {
                                  {{ "start": [10, 0, 3], "goal": [0, 5, 1] }} ] }}"#
             ),
         );
-        let csv = Temp::new("times.csv");
+        let csv = TempFile::new("times", "csv");
         let every_arg = every.to_string();
         let mut args = vec!["simulate", scenario.arg(), "--csv", csv.arg()];
         // Every step by default.
@@ -191,7 +157,7 @@ fn csv_times_are_the_decimals_of_k_dt_and_every_thins_the_rows() {
 #[test]
 fn simulate_reads_the_scenario_from_standard_input() {
     let text = r#"{ "duration": 10, "robots": [ { "start": [0, 0, 0], "goal": [5, 2, 1] } ] }"#;
-    let file = Temp::with_text("stdin.json", text);
+    let file = TempFile::with_text("stdin", text);
     let from_file = dvf(&["simulate", file.arg()]);
     assert_eq!(from_file.status.code(), Some(0));
     let piped = |input: &str| {

@@ -5,25 +5,12 @@
 // The binary exists natively and with the `cli` feature only.
 #![cfg(all(not(target_arch = "wasm32"), feature = "cli"))]
 
+mod common;
+
+use common::{dvf, stderr, stdout};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn dvf(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_dvf"))
-        .args(args)
-        .env("RUST_BACKTRACE", "1")
-        .output()
-        .expect("the dvf binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8(o.stderr.clone()).expect("stderr is UTF-8")
-}
+use std::process::Command;
 
 /// `dvf args`, which must succeed with nothing on stderr: its stdout.
 fn ok(args: &[&str]) -> String {
