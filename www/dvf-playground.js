@@ -209,7 +209,8 @@ export class DvfPlayground extends Base {
     // A bad `src` or `preset` shows its message and stays (no other scene instead).
     const ok = src ? await c.loadUrl(src) : this.#loadPreset(this.getAttribute('preset') || c.defaultPreset);
     if (ok) {
-      this.#seekAttribute();
+      // `loaded` tells of the scene at its `time`; autoplay plays on from there.
+      await this.#seekAttribute();
       this.#autoplay();
     }
     this.#resolveLoaded();
@@ -220,15 +221,18 @@ export class DvfPlayground extends Base {
     return this.#controller.loadPreset(name);
   }
 
-  /** `time`: the state at that time, simulated from t = 0. */
-  #seekAttribute() {
+  /**
+   * `time`: the state at that time, simulated from t = 0 in slices (a crowd's long seek shows
+   * its progress and never blocks the page). Resolves once the seek ends.
+   */
+  async #seekAttribute() {
     const c = this.#controller;
     const attr = this.getAttribute('time');
     if (attr === null || !c.pg) return;
     const t = Number(attr);
     if (attr.trim() === '' || !Number.isFinite(t))
       c.showMessage(`time="${attr}": the time must be a number of seconds`);
-    else c.clock.seek(t);
+    else await c.clock.seekSliced(t);
   }
 
   /** `controls`, `editable`, `readonly` and `loop`: what input may do, and the end of the run. */
@@ -301,6 +305,10 @@ export class DvfPlayground extends Base {
 
   seek(t) {
     return this.#controller?.clock.seek(t) ?? 0;
+  }
+
+  async seekTo(t) {
+    return (await this.#controller?.clock.seekSliced(t)) ?? 0;
   }
 
   get time() {

@@ -10,6 +10,10 @@
 //   progress, growing; Escape, and the progress box's Cancel, stop it at a whole step, the clock
 //   then stays there, and the state shown is the run's own at that time (a synchronous seek to
 //   the same time from t = 0 gives the same poses, to the bit).
+// - A figure's far `time`: a 1,000-robot figure with time="150" seeks in slices on load (its
+//   progress shows, and the page's own requestAnimationFrame and timers run meanwhile), then
+//   `loaded` resolves at t = 150 s with the poses of a synchronous `seek(150)`, to the bit; a
+//   changed `time`, and `seekTo(t)`, seek the same way.
 //
 // Behaviour only: no time is compared with a limit (the costs are measured by
 // benches/drag.mjs --robots 100 and benches/seek.mjs).
@@ -117,6 +121,73 @@ async function checkStopped(page, what) {
   check(
     same,
     `${what}: the state shown is the run's at t = ${stopped.time} s (a seek from t = 0 gives the same poses)`,
+  );
+}
+
+/** The figure with a far `time` attribute, and that time (s): 15,000 steps of the crowd. */
+const FAR = 'dvf-playground#far';
+const FAR_TIME_S = 150;
+
+/**
+ * Adds a 1,000-robot figure with time = FAR_TIME_S to the page, and counts the page's own
+ * animation frames and timer ticks while it loads: the ones counted up to when its progress
+ * first shows, and up to when `loaded` resolves.
+ */
+function addFarFigure(page) {
+  return page.evaluate(
+    ([crowd, t]) => {
+      const el = document.createElement('dvf-playground');
+      el.id = 'far';
+      el.setAttribute('preset', crowd);
+      el.setAttribute('time', String(t));
+      el.setAttribute('readonly', '');
+      el.style.cssText = 'display:block;width:640px;height:400px';
+      const count = { frames: 0, timers: 0, loaded: false };
+      const frame = () => {
+        count.frames += 1;
+        if (!count.loaded) requestAnimationFrame(frame);
+      };
+      requestAnimationFrame(frame);
+      const timer = setInterval(() => {
+        count.timers += 1;
+      }, 20);
+      window.farCount = count;
+      document.body.prepend(el);
+      return el.loaded.then(() => {
+        count.loaded = true;
+        clearInterval(timer);
+      });
+    },
+    [SEEK_CROWD, FAR_TIME_S],
+  );
+}
+
+/** The figure FAR's progress box, time and the page's counts while it shows (null when hidden). */
+function farProgress(page) {
+  return page.evaluate((sel) => {
+    const el = document.querySelector(sel);
+    const box = el?.shadowRoot.querySelector('[data-id="seek"]');
+    if (!box || box.hidden) return null;
+    return {
+      value: box.querySelector('[data-id="seek-bar"]').value,
+      text: box.querySelector('[data-id="seek-text"]').textContent,
+      frames: window.farCount.frames,
+      timers: window.farCount.timers,
+    };
+  }, FAR);
+}
+
+/** FAR's time and poses now, then after a synchronous seek to `t` from t = 0. */
+function farAgainst(page, t) {
+  return page.evaluate(
+    ([sel, t]) => {
+      const el = document.querySelector(sel);
+      const shown = { time: el.time, poses: [...el.cache.poses] };
+      el.seek(t);
+      const sync = { time: el.time, poses: [...el.cache.poses] };
+      return { shown, sync, same: shown.time === sync.time && shown.poses.every((v, i) => v === sync.poses[i]) };
+    },
+    [FAR, t],
   );
 }
 
@@ -234,6 +305,64 @@ await run(async ({ base, newPage }) => {
   await part(page, 'seek-cancel').click();
   await frames(page);
   await checkStopped(page, `${SEEK_CROWD}, Cancel`);
+
+  // --- A figure's far `time`: sliced on load and on change, the page responsive. ---
+  const farLoaded = addFarFigure(page);
+  await page.waitForFunction((sel) => {
+    const box = document.querySelector(sel)?.shadowRoot.querySelector('[data-id="seek"]');
+    return box && !box.hidden;
+  }, FAR);
+  const first = await farProgress(page);
+  await page.waitForFunction(
+    ([sel, v]) => document.querySelector(sel).shadowRoot.querySelector('[data-id="seek-bar"]').value > v + 0.2,
+    [FAR, first.value],
+  );
+  const later = await farProgress(page);
+  check(
+    first && later && /Going to t = 150\.0 s/.test(first.text) && later.value > first.value && later.value < 1,
+    `time="${FAR_TIME_S}" on a ${SEEK_CROWD} figure seeks in slices with its progress ("${first?.text}", then ${((later?.value ?? 0) * 100).toFixed(0)} %)`,
+  );
+  check(
+    later && later.frames - first.frames >= 3 && later.timers - first.timers >= 3,
+    `the page answers while it seeks: ${later.frames - first.frames} of its animation frames and ${later.timers - first.timers} of its timer ticks ran`,
+  );
+  await farLoaded;
+  const atLoad = await farAgainst(page, FAR_TIME_S);
+  check(
+    Math.abs(atLoad.shown.time - FAR_TIME_S) < TIME_ROUNDING_S && atLoad.same && (await farProgress(page)) === null,
+    `loaded resolves at t = ${atLoad.shown.time} s with the poses of a synchronous seek(${FAR_TIME_S}), the progress hidden`,
+  );
+  // A changed `time` seeks in slices too (the synchronous seek above left the clock there).
+  const changed = FAR_TIME_S - 50;
+  await page.evaluate(([sel, t]) => document.querySelector(sel).setAttribute('time', String(t)), [FAR, changed]);
+  await page.waitForFunction(
+    (sel) => document.querySelector(sel).shadowRoot.querySelector('[data-id="seek"]').hidden === false,
+    FAR,
+  );
+  await page.waitForFunction(
+    ([sel, t]) =>
+      Math.abs(document.querySelector(sel).time - t) < 1e-6 &&
+      document.querySelector(sel).shadowRoot.querySelector('[data-id="seek"]').hidden,
+    [FAR, changed],
+  );
+  const atChange = await farAgainst(page, changed);
+  check(atChange.same, `time="${changed}" set later seeks in slices to the poses of a synchronous seek(${changed})`);
+  const reached = await page.evaluate(([sel, t]) => document.querySelector(sel).seekTo(t), [FAR, changed + 0.004]);
+  const bad = await page.evaluate(
+    (sel) =>
+      document
+        .querySelector(sel)
+        .seekTo('x')
+        .then(
+          () => '',
+          (e) => e.message,
+        ),
+    FAR,
+  );
+  check(
+    Math.abs(reached - changed) < TIME_ROUNDING_S && /time must be a number/.test(bad),
+    `seekTo(${changed + 0.004}) resolves to t = ${reached} s; seekTo('x') rejects: "${bad}"`,
+  );
   checkQuiet(page, 'the crowd page');
   await page.context().close();
 });

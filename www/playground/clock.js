@@ -26,6 +26,16 @@ const STEP_TIME_S = 0.1;
  * }} ClockHost
  */
 
+/**
+ * The steps of dt a seek to time `t` (s) takes from t = 0, `t` clamped to [0, duration]: a
+ * whole number; the tolerance keeps 6 / 0.01 from rounding down to 599 steps.
+ * @param {number} t
+ * @param {import('../pkg/dvf.js').Playground} pg
+ */
+function wholeSteps(t, pg) {
+  return Math.floor(Math.min(Math.max(t, 0), pg.duration) / pg.dt + 1e-9);
+}
+
 export class Clock {
   /** @param {ClockHost} host */
   constructor(host) {
@@ -56,7 +66,7 @@ export class Clock {
   /** Back to t = 0 at the scenario's starts (trails cleared). */
   reset() {
     if (!this.host.sim()) return;
-    this.host.loop.seekStep = null;
+    this.host.loop.endSeek();
     this.host.loop.convergedAt = null;
     this.rewind();
     this.host.viewChanged();
@@ -73,6 +83,28 @@ export class Clock {
     if (!this.host.sim() || !Number.isFinite(t)) return;
     this.host.loop.seekTo(t);
     this.host.shown();
+  }
+
+  /**
+   * Shows the state at time `t` (s, clamped to [0, duration]) as `seek` does, from t = 0 and
+   * the same whole number of steps, but in slices (FrameLoop.seekTo), with the progress box and
+   * its Cancel: the page stays responsive through a long seek. Returns a promise of the time
+   * where the seek ends (FrameLoop.whenSeekEnds). Throws for a `t` that is not a number.
+   * @returns {Promise<number>}
+   */
+  seekSliced(t) {
+    if (typeof t !== 'number' || Number.isNaN(t))
+      throw new Error(`seek: the time must be a number of seconds, not ${t}`);
+    const pg = this.host.sim();
+    if (!pg) return Promise.resolve(0);
+    // No step to take: at once (no frame needed, so that it ends out of the document too).
+    if (wholeSteps(t, pg) === 0) return Promise.resolve(this.seek(t));
+    this.pause();
+    this.host.loop.convergedAt = null;
+    this.rewind();
+    this.host.loop.seekTo(wholeSteps(t, pg) * pg.dt);
+    this.host.shown();
+    return this.host.loop.whenSeekEnds();
   }
 
   /** Whether a seek in slices (seekTo) is under way. */
@@ -115,7 +147,7 @@ export class Clock {
     const pg = this.host.sim();
     if (!pg) return 0;
     this.pause();
-    this.host.loop.seekStep = null;
+    this.host.loop.endSeek();
     const taken = pg.step(n);
     this.host.changed();
     this.#moved();
@@ -135,12 +167,10 @@ export class Clock {
     if (!pg) return 0;
     this.pause();
     // Synchronous: a seek in slices under way (the scrubber's, FrameLoop.seekTo) ends here.
-    this.host.loop.seekStep = null;
+    this.host.loop.endSeek();
     this.host.loop.convergedAt = null;
     pg.reset();
-    const target = Math.min(Math.max(t, 0), pg.duration);
-    // A whole number of steps; the tolerance keeps 6 / 0.01 from rounding down to 599 steps.
-    const steps = Math.floor(target / pg.dt + 1e-9);
+    const steps = wholeSteps(t, pg);
     for (let left = steps; left > 0; ) {
       const taken = pg.step(Math.min(left, MAX_STEPS_PER_CALL));
       if (taken === 0) break;

@@ -71,6 +71,8 @@ export class FrameLoop {
     this.seekFrom = 0;
     this.seekStartMs = 0;
     this.seekDrawnMs = 0;
+    /** @type {((time: number) => void)[]} who waits for the seek under way to end (whenSeekEnds) */
+    this.seekWaiters = [];
     /** @type {number | null} when every robot had converged and the clock stopped (s) */
     this.convergedAt = null;
     /** @type {HTMLCanvasElement | null} */
@@ -98,7 +100,7 @@ export class FrameLoop {
   play() {
     this.playing = true;
     this.lastFrameMs = null;
-    this.seekStep = null;
+    this.endSeek();
     this.convergedAt = null;
   }
 
@@ -129,10 +131,30 @@ export class FrameLoop {
     return this.seekStep != null;
   }
 
+  /**
+   * A promise of the time (s) where the seek under way ends: reached, cancelled, or stopped by
+   * another move of the clock (play, step, a synchronous seek, a new scene); at once when none.
+   * @returns {Promise<number>}
+   */
+  whenSeekEnds() {
+    if (this.seekStep == null) return Promise.resolve(this.host.sim() ? this.host.time() : 0);
+    return new Promise((resolve) => this.seekWaiters.push(resolve));
+  }
+
+  /** No seek under way any more: tells those waiting for it (whenSeekEnds) the time now. */
+  endSeek() {
+    this.seekStep = null;
+    if (this.seekWaiters.length === 0) return;
+    const waiters = this.seekWaiters;
+    this.seekWaiters = [];
+    const time = this.host.sim() ? this.host.time() : 0;
+    for (const resolve of waiters) resolve(time);
+  }
+
   /** Ends the seek under way where it is: a whole step of the run, shown and told as at rest. */
   cancelSeek() {
     if (this.seekStep == null) return;
-    this.seekStep = null;
+    this.endSeek();
     this.host.settled();
     this.requestDraw();
   }
@@ -145,7 +167,7 @@ export class FrameLoop {
   newScene() {
     this.playing = false;
     this.stepMs = null;
-    this.seekStep = null;
+    this.endSeek();
     this.convergedAt = null;
   }
 
@@ -194,7 +216,7 @@ export class FrameLoop {
     const fit = this.stepMs == null ? 1 : Math.max(1, Math.floor(SEEK_SLICE_MS / this.stepMs));
     if (left > 0) this.timedAdvance(Math.min(left, fit));
     if (left <= Math.min(left, fit) || pg.finished) {
-      this.seekStep = null;
+      this.endSeek();
       this.host.settled();
     }
   }
