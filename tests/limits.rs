@@ -225,3 +225,114 @@ fn limits_that_do_not_bind_change_nothing() {
         assert_eq!(command(&loose, pose, goal, &[], &[]), c);
     }
 }
+
+/// With `ω_max` set, the virtual obstacle's exit asks where the robot's field leads, not where
+/// its heading points (src/controller.rs, docs/notes-on-the-paper.md §10). Hand-worked scene:
+/// a robot at the origin heading `θ = −1.4` (down, a little right), its goal 20 ahead along
+/// +x, a neighbour at (2, 2) moving as fast as it does. The heading leads away from the
+/// neighbour and the goal field towards it. Without limits the neighbour is no candidate (the
+/// heading is what the exit asks) and the robot follows its goal field; with `ω_max = 2` it
+/// circles the midpoint (1, 1): `keep_c = 0` (1.41 from it, inside `R_c = 3`), its field is the
+/// tangent `Γ_r⊥ = R(π/2)(p − p̃_o) = (1, −1)` (the one with a positive projection on the body
+/// Y axis), `δ = −π/4 − θ = 0.6146`, `ω = k_a·δ = 6.146` cut to `ω_max = 2`, and
+/// `v = v_c·ω_max/|ω| = 2·2/6.146`. Tolerance 1e-12: a few roundings of the same formulas.
+#[test]
+fn with_a_turn_rate_limit_the_exit_follows_the_field() {
+    use dvf::controller::evaluate;
+    use dvf::swarm::{Neighbour, SLOWEST_UNKNOWN};
+    use glam::DVec2;
+    let theta = -1.4;
+    let pose = Pose::new(0.0, 0.0, theta);
+    let goal = Pose::new(20.0, 0.0, 0.0);
+    let neighbour = Neighbour {
+        position: DVec2::new(2.0, 2.0),
+        speed: 1.0,
+        slowest_near: SLOWEST_UNKNOWN,
+    };
+    let to = neighbour.position - pose.p;
+    let run = |params: &Params| evaluate(params, pose, pose.error_to(goal), 1.0, &[], [neighbour]);
+    let free = run(&Params::default());
+    let limited = run(&Params {
+        omega_max: Some(2.0),
+        ..Params::default()
+    });
+    // The premises: the goal field leads towards the neighbour, the direction of motion (the
+    // heading, reversed for a goal behind) away from it.
+    let h = DVec2::new(theta.cos(), theta.sin());
+    let motion = if h.dot(free.goal_field) < 0.0 { -h } else { h };
+    assert!(free.goal_field.dot(to) > 0.0, "{:?}", free.goal_field);
+    assert!(motion.dot(to) < 0.0, "{motion:?}");
+
+    assert_eq!(free.virtual_obstacle, None, "unlimited: heading leads away");
+    assert_eq!(free.robot_keep, 1.0);
+    assert_eq!(limited.virtual_obstacle, Some(DVec2::new(1.0, 1.0)));
+    assert_eq!(limited.robot_keep, 0.0);
+    assert!(
+        (limited.field - DVec2::new(1.0, -1.0)).length() < 1e-12,
+        "the tangent: {:?}",
+        limited.field
+    );
+    let delta = -std::f64::consts::FRAC_PI_4 - theta;
+    let asked = Params::default().k_a * delta;
+    let expected = Command {
+        v: Params::default().avoid_speed * 2.0 / asked,
+        omega: 2.0,
+    };
+    let c = limited.command;
+    assert_eq!(c.omega, expected.omega, "{c:?}");
+    assert!(
+        (c.v - expected.v).abs() < 1e-12,
+        "{c:?} against {expected:?}"
+    );
+}
+
+/// The barrier's left turn (src/safety/mod.rs, `filter`), cut by `ω_max`, slows the robot by
+/// the same factor: the command keeps the curvature `ω/v` the turn asks for. Scene: a robot at
+/// the origin heading +y with `(v, ω) = (1, 0.5)`, its field `(1, 0)` pointing at a neighbour
+/// at (2.05, 0), 0.05 beyond the safe distance 2. The barrier (`α = 5`, `dt = 0.01`) allows
+/// `½α·0.05 = 0.125` along the field of the speed `k_v|Γ| = 1` wanted: held by 0.875, it turns
+/// the robot left by `k_a·0.875·π/2 = 13.74`, and the step (to the left, away from the
+/// neighbour) is not braked. With `ω_max = 2` the turn rate is 2 and the speed
+/// `1·2/14.24`: the same curvature as the unlimited command, to a relative 1e-12 (one
+/// division and one product apart).
+#[test]
+fn a_barrier_turn_cut_by_the_limit_keeps_its_curvature() {
+    use dvf::safety::{filter, Constraints};
+    use glam::DVec2;
+    let pose = Pose::new(0.0, 0.0, std::f64::consts::FRAC_PI_2);
+    let c = Command { v: 1.0, omega: 0.5 };
+    let field = DVec2::X;
+    let neighbour = DVec2::new(2.05, 0.0);
+    let run = |params: &Params| {
+        filter(
+            &mut Constraints::new(),
+            params,
+            0.01,
+            pose,
+            c,
+            field,
+            [neighbour],
+            [],
+        )
+        .0
+    };
+    let free = run(&Params::default());
+    let limited = run(&Params {
+        omega_max: Some(2.0),
+        ..Params::default()
+    });
+    // Hand-worked turn, to 1e-6: the barrier keeps distances a relative 1e-9 beyond the
+    // limit, 2e-9 of the 0.05 left, which moves the held part by 5e-9 and the turn by 8e-8.
+    let turned = 0.5 + 10.0 * 0.875 * std::f64::consts::FRAC_PI_2;
+    assert!(
+        (free.omega - turned).abs() < 1e-6,
+        "{free:?} against {turned}"
+    );
+    assert_eq!(free.v, c.v, "the left turn is not braked");
+    assert_eq!(limited.omega, 2.0, "{limited:?}");
+    let (k_free, k_limited) = (free.omega / free.v, limited.omega / limited.v);
+    assert!(
+        (k_limited - k_free).abs() <= 1e-12 * k_free.abs(),
+        "curvature {k_limited} against {k_free}"
+    );
+}
