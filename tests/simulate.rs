@@ -7,7 +7,7 @@
 
 mod common;
 
-use common::{dvf, TempFile, DVF};
+use common::{dvf, on_a_terminal, TempFile, DVF};
 use serde_json::Value;
 use std::fs::File;
 use std::io::Write;
@@ -204,14 +204,7 @@ fn progress_shows_on_a_terminal_and_never_on_a_pipe() {
         "{}",
         String::from_utf8_lossy(&o.stderr)
     );
-    let command = format!("{DVF} {}", args.join(" "));
-    let o = Command::new("script")
-        .args(["-qec", &command, "/dev/null"])
-        .env("TERM", "xterm")
-        .output()
-        .expect("script (util-linux) runs dvf on a pseudo-terminal");
-    assert_eq!(o.status.code(), Some(0));
-    let screen = String::from_utf8_lossy(&o.stdout);
+    let screen = on_a_terminal(&args);
     assert!(screen.contains(" step "), "no progress bar: {screen:?}");
     assert!(screen.contains("/2500"), "no step count: {screen:?}");
     assert!(

@@ -7,10 +7,9 @@
 
 mod common;
 
-use common::{dvf, stderr, stdout};
+use common::{dvf, on_a_terminal, stderr, stdout};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 /// `dvf args`, which must succeed with nothing on stderr: its stdout.
 fn ok(args: &[&str]) -> String {
@@ -457,14 +456,7 @@ fn a_sweep_shows_its_progress_on_a_terminal_only() {
     let o = dvf(&args);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(o.stderr.is_empty(), "{}", stderr(&o));
-    let command = format!("{} {}", env!("CARGO_BIN_EXE_dvf"), args.join(" "));
-    let o = Command::new("script")
-        .args(["-qec", &command, "/dev/null"])
-        .env("TERM", "xterm")
-        .output()
-        .expect("script (util-linux) runs dvf on a pseudo-terminal");
-    assert_eq!(o.status.code(), Some(0));
-    let screen = String::from_utf8_lossy(&o.stdout);
+    let screen = on_a_terminal(&args);
     assert!(screen.contains(" scenario "), "no progress bar: {screen:?}");
     assert!(screen.contains("/3"), "no scenario count: {screen:?}");
     assert!(

@@ -30,6 +30,19 @@ pub fn stderr(o: &Output) -> String {
     String::from_utf8(o.stderr.clone()).expect("stderr is UTF-8")
 }
 
+/// Runs `dvf args` on a pseudo-terminal (util-linux's `script`), asserts that it succeeds, and
+/// returns what the terminal showed: standard output and standard error together.
+pub fn on_a_terminal(args: &[&str]) -> String {
+    let command = format!("{DVF} {}", args.join(" "));
+    let o = Command::new("script")
+        .args(["-qec", &command, "/dev/null"])
+        .env("TERM", "xterm")
+        .output()
+        .expect("script (util-linux) runs dvf on a pseudo-terminal");
+    assert_eq!(o.status.code(), Some(0), "dvf {args:?} on a terminal");
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
 /// A file in the system temp directory with a name unique to this process and call; removed
 /// when dropped.
 pub struct TempFile(pub PathBuf);
