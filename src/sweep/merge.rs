@@ -245,7 +245,7 @@ fn at(o: &Outcome) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sweep::{Recipe, RecipeKey};
+    use crate::sweep::Recipe;
     use crate::testing::test;
 
     /// A skipped scenario's line of the sweep of `count` seeds from 10, shard `[k, n]`.
@@ -260,16 +260,7 @@ mod tests {
                 point: 0,
                 shard,
             }),
-            seed,
-            values: crate::sweep::Values::new(),
-            recipe: RecipeKey::of(&recipe),
-            skipped: true,
-            dt: recipe.dt,
-            obstacles: 0,
-            robots: Vec::new(),
-            violations: 0,
-            closest: None,
-            smoothness: crate::sim::smoothness::Sums::default(),
+            ..Outcome::skipped(&recipe, seed)
         };
         serde_json::to_string(&o).unwrap()
     }

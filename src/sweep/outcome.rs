@@ -160,9 +160,11 @@ pub struct Outcome {
 }
 
 impl Outcome {
-    /// Runs scenario `seed` of `recipe`; `on_report` sees the run.
-    pub fn run(recipe: &Recipe, seed: u64, on_report: impl FnOnce(&Scenario, &Report)) -> Self {
-        let mut outcome = Self {
+    /// Scenario `seed` of `recipe` skipped: its robots or obstacles could not be placed, so
+    /// nothing ran.
+    #[must_use]
+    pub fn skipped(recipe: &Recipe, seed: u64) -> Self {
+        Self {
             sweep: None,
             seed,
             values: Values::new(),
@@ -174,7 +176,12 @@ impl Outcome {
             violations: 0,
             closest: None,
             smoothness: Sums::default(),
-        };
+        }
+    }
+
+    /// Runs scenario `seed` of `recipe`; `on_report` sees the run.
+    pub fn run(recipe: &Recipe, seed: u64, on_report: impl FnOnce(&Scenario, &Report)) -> Self {
+        let mut outcome = Self::skipped(recipe, seed);
         if let Some(scenario) = scenario(recipe, seed) {
             let mut closest = ClosestPair::default();
             // A generated scenario passes its checks (`generate.rs`); one that did not would
