@@ -109,6 +109,7 @@ pub mod unicycle;
 pub mod error;
 pub mod grid;
 pub mod params;
+pub mod planner;
 pub mod presets;
 pub mod scenario;
 pub mod sim;

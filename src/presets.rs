@@ -170,6 +170,7 @@ fn table1() -> Scenario {
         [-40.0, 0.0, PI],
     ];
     Scenario {
+        planner: crate::planner::Spec::default(),
         name: "Table I: motion planning in free space".into(),
         bounds: Some([-55.0, -55.0, 55.0, 55.0]),
         duration: 60.0,
@@ -192,6 +193,7 @@ fn table2() -> Scenario {
         influence: 3.0,
     };
     Scenario {
+        planner: crate::planner::Spec::default(),
         name: "Table II: motion planning with obstacle avoidance".into(),
         bounds: Some([-45.0, -15.0, 15.0, 40.0]),
         duration: 20.0,
@@ -233,6 +235,7 @@ fn formation_gap_grid() -> Scenario {
         influence: 7.0,
     };
     Scenario {
+        planner: crate::planner::Spec::default(),
         name: "Formation: through a gap into a grid".into(),
         bounds: None,
         duration: 90.0,
@@ -357,6 +360,7 @@ pub fn line_swap(n: usize, spacing: f64) -> Scenario {
 /// obstacles.
 fn swap(name: String, robots: Vec<RobotSpec>) -> Scenario {
     Scenario {
+        planner: crate::planner::Spec::default(),
         name,
         bounds: None,
         duration: 120.0,
@@ -390,6 +394,7 @@ fn example4() -> Scenario {
         })
         .collect();
     Scenario {
+        planner: crate::planner::Spec::default(),
         name: "Example 4: obstacle and collision avoidance into a line".into(),
         bounds: Some([-95.0, -80.0, 60.0, 80.0]),
         duration: 25.0,

@@ -21,6 +21,7 @@ pub use builder::ScenarioBuilder;
 use crate::error::Error;
 use crate::obstacle::Obstacle;
 use crate::params::{Params, Slot, PARAMETERS};
+use crate::planner::Spec;
 use crate::se2::Pose;
 use glam::DVec2;
 use serde::{Deserialize, Serialize};
@@ -100,6 +101,10 @@ pub struct Scenario {
     /// Circular obstacles. Default none.
     #[serde(default)]
     pub obstacles: Vec<Obstacle>,
+    /// The planner that drives the robots ([`crate::planner`]): a name (`"avf"`) or an object
+    /// with its gains (`{"name": "avf", "lambda": 2}`). Default `"dvf"`, left out when written.
+    #[serde(default, skip_serializing_if = "Spec::is_default")]
+    pub planner: Spec,
 }
 
 fn default_name() -> String {
@@ -292,6 +297,7 @@ impl Scenario {
                 );
             }
         }
+        self.planner.build()?;
         if self.robots.is_empty() {
             return invalid("robots", "needs at least one robot");
         }

@@ -63,6 +63,7 @@ fn random_pairs(seed: u64, pairs: usize, params: Params) -> Stats {
             })
             .collect();
         let s = Scenario {
+            planner: dvf::planner::Spec::default(),
             name: "random pairs".into(),
             bounds: None,
             duration: 60.0,
@@ -237,6 +238,7 @@ fn random_obstacle_fields_never_produce_non_finite_states() {
     let worst = std::cell::RefCell::new(None);
     let result = runner.run(&obstacle_field(), |f| {
         let s = Scenario {
+            planner: dvf::planner::Spec::default(),
             name: "random obstacles".into(),
             bounds: None,
             duration: 40.0,
@@ -344,6 +346,7 @@ prop_compose! {
         let (r_c, r_ij, r_s, _) = radii;
         let r_ij = r_ij.min(10.0);
         Scenario {
+            planner: dvf::planner::Spec::default(),
             name: "arbitrary state".into(),
             bounds: None,
             duration: 50.0 * dt,

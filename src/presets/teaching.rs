@@ -23,6 +23,7 @@ fn teaching(
     obstacles: Vec<Obstacle>,
 ) -> Scenario {
     Scenario {
+        planner: crate::planner::Spec::default(),
         name: name.into(),
         bounds: Some(bounds),
         duration: 60.0,

@@ -22,6 +22,7 @@ impl Default for Scenario {
             independent: false,
             robots: Vec::new(),
             obstacles: Vec::new(),
+            planner: crate::planner::Spec::default(),
         }
     }
 }

@@ -30,7 +30,11 @@ impl Simulation {
         self.goal_headings[i] = heading(self.robots[i].goal.theta);
         self.headings[i] = heading(self.robots[i].pose.theta);
         let now = self.robots[i].pose.p;
-        if now == was {
+        if self.planned.is_some() {
+            // A planner other than DVF may plan jointly: every robot is planned again.
+            self.find_neighbours(None);
+            self.plan_all();
+        } else if now == was {
             // Only robot `i` depends on its own goal and heading.
             self.evaluate_robot(i);
         } else {
@@ -70,6 +74,11 @@ impl Simulation {
         let was = self.obstacles[k];
         self.obstacles[k] = obstacle;
         self.build_obstacle_cells();
+        if self.planned.is_some() {
+            self.plan_all();
+            self.observe_again();
+            return true;
+        }
         let near = self.sense_margin();
         for j in 0..self.robots.len() {
             let p = self.robots[j].pose.p;

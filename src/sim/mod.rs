@@ -27,16 +27,17 @@
 //! The loop (integrate, find neighbours, evaluate, observe) and the metrics know nothing of the
 //! method but `Simulation::evaluation` (`evaluation.rs`), which asks the DVF controller
 //! ([`crate::controller::evaluate`]) and the safety barrier ([`crate::safety::filter`]) for one
-//! robot's command from what it senses. A baseline planner (ORCA, a unicycle CLF controller
-//! with the barrier, the dipole field) would be a module beside `controller` and a branch
-//! there, sharing the scenario, this loop, [`crate::grid`]'s neighbourhoods, the metrics and
-//! the report.
+//! robot's command from what it senses, and `Simulation::plan_all` (`planned.rs`), which asks
+//! another planner ([`crate::planner`], the scenario's `planner`) for every robot's command
+//! and puts each through the same limits and barrier. Both share the scenario, this loop,
+//! [`crate::grid`]'s neighbourhoods, the metrics and the report.
 
 mod edits;
 mod evaluation;
 mod lists;
 mod metrics;
 mod parallel;
+mod planned;
 pub mod report;
 pub mod run;
 mod sensing;
@@ -51,6 +52,7 @@ use crate::error::Error;
 use crate::grid::{Neighbours, ObstacleCells};
 use crate::obstacle::Obstacle;
 use crate::params::Params;
+use crate::planner::Built;
 use crate::scenario::Scenario;
 use crate::se2::{continue_branch, heading, wrap_angle, Pose};
 use crate::swarm::Neighbour;
@@ -60,6 +62,7 @@ use evaluation::Scratch;
 use glam::DVec2;
 use lists::moved_within;
 use metrics::{Metrics, Observed};
+use planned::Planned;
 
 /// A robot's state in the simulation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -167,6 +170,11 @@ pub struct Simulation {
     // chords, it always belongs to the robot's current command; a step swaps it with
     // `headings` once the robots have moved, and its evaluations fill it again.
     headings_after: Vec<DVec2>,
+    // The scenario's planner when it is not DVF (`planned.rs`); `None` for DVF, which this
+    // module's evaluation is.
+    planned: Option<Planned>,
+    // The planner's name in the report (`None` for `dvf`).
+    planner: Option<String>,
 }
 
 impl Simulation {
@@ -199,12 +207,22 @@ impl Simulation {
             .map(|r| Robot::at(r.start_pose(), r.goal_pose()))
             .collect();
         let n = robots.len();
+        // A valid scenario's planner builds (`Scenario::validate`); DVF otherwise.
+        let mut params = s.params;
+        let planned = match s.planner.build() {
+            Ok(Built::Other(planner)) => Some(Planned::new(planner)),
+            Ok(Built::Dvf(avoidance)) => {
+                params.avoidance = avoidance.unwrap_or(params.avoidance);
+                None
+            }
+            Err(_) => None,
+        };
         let slowest_known = !s.independent
             && neighbourhood == Neighbourhood::Grid
-            && sensing::slowest_known(&s.params);
+            && sensing::slowest_known(&params);
         let mut sim = Self {
             name: s.name.clone(),
-            params: s.params,
+            params,
             dt: s.dt,
             independent: s.independent,
             obstacles: s.obstacles.clone(),
@@ -216,8 +234,8 @@ impl Simulation {
             obstacle_cells: ObstacleCells::default(),
             near: Neighbours::new(),
             positions: Vec::with_capacity(n),
-            reach: lists::list_reach(&s.params, slowest_known),
-            controller_reach: sensing::controller_reach(&s.params, slowest_known),
+            reach: lists::list_reach(&params, slowest_known),
+            controller_reach: sensing::controller_reach(&params, slowest_known),
             slowest_known,
             sensed: Vec::new(),
             closest2: None,
@@ -230,6 +248,8 @@ impl Simulation {
             speeds: vec![0.0; n],
             goal_headings: Vec::new(),
             headings: Vec::new(),
+            planned,
+            planner: (!s.planner.is_default()).then(|| s.planner.name.clone()),
         };
         sim.goal_headings = sim.robots.iter().map(|r| heading(r.goal.theta)).collect();
         sim.headings = sim.robots.iter().map(|r| heading(r.pose.theta)).collect();
@@ -339,6 +359,11 @@ impl Simulation {
     /// more than half the lists' skin (see [`Self::find_neighbours`]); `None` tests it here.
     fn evaluate_all(&mut self, advanced: Option<bool>) {
         self.find_neighbours(advanced);
+        if self.planned.is_some() {
+            self.plan_all();
+            self.closest2 = None;
+            return;
+        }
         self.sense_all();
         let closest2 = parallel::evaluate(self);
         // The evaluations saw every listed pair within the lists' reach when their sensing
@@ -372,6 +397,7 @@ impl Simulation {
     pub fn report(&self) -> Report {
         Report {
             name: self.name.clone(),
+            planner: self.planner.clone(),
             time: self.time,
             steps: self.steps,
             robots: self

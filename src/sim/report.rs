@@ -27,6 +27,9 @@ pub struct RobotReport {
 pub struct Report {
     /// The scenario's name.
     pub name: String,
+    /// The planner, when it is not `dvf` (the scenario's `planner`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub planner: Option<String>,
     /// Simulated time at the end (s).
     pub time: f64,
     /// Steps taken.

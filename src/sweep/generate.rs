@@ -156,6 +156,7 @@ fn scene(
     obstacles: Vec<Obstacle>,
 ) -> Scenario {
     Scenario {
+        planner: crate::planner::Spec::default(),
         name,
         bounds: None,
         duration: recipe.duration,

@@ -171,6 +171,7 @@ impl Recipe {
             });
         }
         Scenario {
+            planner: crate::planner::Spec::default(),
             name: String::new(),
             bounds: None,
             duration: self.duration,
