@@ -4,9 +4,11 @@
 
 use super::Simulation;
 use crate::controller::{saturate, Evaluation};
+use crate::error::Error;
 use crate::grid::Neighbours;
 use crate::planner::{Planner, World};
 use crate::safety;
+use crate::scenario::Scenario;
 use crate::Command;
 use glam::DVec2;
 
@@ -42,6 +44,23 @@ impl Clone for Planned {
 }
 
 impl Simulation {
+    /// A simulation at time 0 of scenario `s` whose robots `planner` drives, in place of the
+    /// scenario's own `planner`: a planner of one's own, on the simulator's unicycle, sensing,
+    /// limits, barrier, metrics and report. The report names it `custom`.
+    ///
+    /// # Errors
+    /// As [`Simulation::new`].
+    pub fn with_planner(s: &Scenario, planner: Box<dyn Planner>) -> Result<Self, Error> {
+        s.validate()?;
+        let mut sim = Self::of_valid(s, super::Neighbourhood::Grid);
+        sim.planned = Some(Planned::new(planner));
+        sim.planner = Some("custom".to_owned());
+        sim.evaluate_all(None);
+        sim.metrics.clear();
+        sim.observe();
+        Ok(sim)
+    }
+
     /// Every robot's command from the planner, limited and made safe, into `last`, `commands`,
     /// `chords` and `headings_after`. A command that is not finite is a stop: nothing a
     /// planner computes reaches the unicycle as NaN.
@@ -120,7 +139,6 @@ impl Simulation {
 mod tests {
     use super::*;
     use crate::planner::{Built, Spec};
-    use crate::scenario::Scenario;
     use crate::testing::test;
 
     /// Every robot drives straight at 1 m/s: a planner with no avoidance of its own.
@@ -149,10 +167,7 @@ mod tests {
     }
 
     fn straight(s: &Scenario) -> Simulation {
-        let mut sim = Simulation::new(s).unwrap();
-        sim.planned = Some(Planned::new(Box::new(Straight)));
-        sim.evaluate_all(None);
-        sim
+        Simulation::with_planner(s, Box::new(Straight)).unwrap()
     }
 
     /// The shared barrier stops two robots a planner drives into each other, as it does DVF's;
