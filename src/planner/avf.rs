@@ -52,6 +52,10 @@ pub(super) struct Gains {
     /// `k_ω` (1/s): the gain of the heading error to the field (`kw = 1` in
     /// `Controller_AVF.m`).
     pub k_omega: f64,
+    /// The source's end (m): the robot stops once it is within this distance of the goal
+    /// and its speed is below `v_max/10` (`Controller_AVF.m` stops its run there, with
+    /// `ρ/10` and `ρ = 1`); 0 never stops.
+    pub stop_within: f64,
 }
 
 impl Default for Gains {
@@ -60,6 +64,7 @@ impl Default for Gains {
             lambda: 2.0,
             v_max: 3.0,
             k_omega: 1.0,
+            stop_within: 0.1,
         }
     }
 }
@@ -79,7 +84,23 @@ impl Gains {
             });
         }
         positive("v_max", self.v_max)?;
-        positive("k_omega", self.k_omega)
+        positive("k_omega", self.k_omega)?;
+        not_negative("stop_within", self.stop_within)
+    }
+}
+
+/// A gain that must be a finite number ≥ 0.
+///
+/// # Errors
+/// [`Error::Invalid`] naming `planner.{name}`.
+pub(super) fn not_negative(name: &str, v: f64) -> Result<(), Error> {
+    if v.is_finite() && v >= 0.0 {
+        Ok(())
+    } else {
+        Err(Error::Invalid {
+            field: format!("planner.{name}"),
+            message: format!("must be a finite number ≥ 0, not {v}"),
+        })
     }
 }
 
@@ -130,13 +151,17 @@ fn direction(lambda: f64, q: DVec2) -> Option<DVec2> {
 /// The command of a robot at `pose` bound for `goal`, and the velocity it wants in the world
 /// frame (along the field, at the commanded speed).
 ///
-/// At the goal position the field has no direction: there the robot stops and turns to the
-/// goal's heading (`∠F` taken as 0 and its rate as 0), where the source's normalisation of a
-/// zero vector would give NaN.
+/// Within `stop_within` of the goal and slower than `v_max/10` the robot stops, where the
+/// source ends its run. At the goal position the field has no direction: there a robot that
+/// does not stop turns to the goal's heading (`∠F` taken as 0 and its rate as 0), where the
+/// source's normalisation of a zero vector would give NaN.
 pub(super) fn command(g: &Gains, pose: Pose, goal: Pose) -> (Command, DVec2) {
     let r = pose.p - goal.p;
     let d = r.length();
     let v = g.v_max * libm::tanh(d);
+    if d < g.stop_within && v < g.v_max / 10.0 {
+        return (Command::default(), DVec2::ZERO);
+    }
     // The robot's heading in the goal frame.
     let h = heading(wrap_angle(pose.theta - goal.theta));
     let q = unrotate(goal.theta, r);
@@ -279,14 +304,23 @@ mod tests {
         }
     }
 
-    /// At the goal position the robot stops and turns to the goal heading: no NaN.
+    /// Near the goal and slow, the robot stops where the source ends its run; with no end
+    /// (`stop_within = 0`) it stops at the goal position and turns to the goal heading: no NaN.
     #[test]
-    fn at_the_goal_position_it_turns_to_the_goal_heading() {
-        let (c, f) = command(&Gains::default(), pose(1.0, 2.0, 0.5), pose(1.0, 2.0, 0.0));
+    fn near_the_goal_it_stops_or_turns_to_the_goal_heading() {
+        let stop = command(&Gains::default(), pose(1.09, 2.0, 0.5), pose(1.0, 2.0, 0.0));
+        assert_eq!(stop, (Command::default(), DVec2::ZERO));
+        let (c, _) = command(&Gains::default(), pose(1.11, 2.0, 0.5), pose(1.0, 2.0, 0.0));
+        assert!(c.v > 0.3, "{c:?}");
+        let g = Gains {
+            stop_within: 0.0,
+            ..Gains::default()
+        };
+        let (c, f) = command(&g, pose(1.0, 2.0, 0.5), pose(1.0, 2.0, 0.0));
         assert_eq!(c.v, 0.0);
         assert_close!(c.omega, -0.5, 1e-15);
         assert_eq!(f, DVec2::ZERO);
-        let (c, _) = command(&Gains::default(), pose(1e-200, 0.0, 0.5), Pose::default());
+        let (c, _) = command(&g, pose(1e-200, 0.0, 0.5), Pose::default());
         assert!(c.v.is_finite() && c.omega.is_finite(), "{c:?}");
     }
 
@@ -303,6 +337,7 @@ mod tests {
         assert!(refused(json!({"lambda": "2"})).starts_with("planner.lambda: "));
         assert!(refused(json!({"v_max": 0})).starts_with("planner.v_max: "));
         assert!(refused(json!({"k_omega": -1})).starts_with("planner.k_omega: "));
+        assert!(refused(json!({"stop_within": -0.1})).starts_with("planner.stop_within: "));
         let e = refused(json!({"k_w": 1}));
         assert!(e.starts_with("planner") && e.contains("k_w"), "{e}");
         let serde_json::Value::Object(map) = json!({"lambda": 3, "v_max": 1}) else {

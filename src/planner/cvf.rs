@@ -59,6 +59,10 @@ pub(super) struct Gains {
     pub c_p: Option<f64>,
     /// `k_ω,max` (1/s): the most the dynamic gain takes (`kw_max = 1` in `kw.m`).
     pub kw_max: f64,
+    /// The source's end (m): the robot stops once it is within this distance of the goal
+    /// and its speed is below `v_max/10` (`Controller_CVF.m` stops its run there, with
+    /// `ρ/10`; `se2_controller_Unicycle.m` with `ρ/2`); 0 never stops.
+    pub stop_within: f64,
 }
 
 impl Default for Gains {
@@ -71,6 +75,7 @@ impl Default for Gains {
             k3: 12.0,
             c_p: None,
             kw_max: 1.0,
+            stop_within: 0.1,
         }
     }
 }
@@ -97,7 +102,8 @@ impl Gains {
         if let Some(c) = self.c_p {
             positive("c_p", c)?;
         }
-        positive("kw_max", self.kw_max)
+        positive("kw_max", self.kw_max)?;
+        super::avf::not_negative("stop_within", self.stop_within)
     }
 }
 
@@ -186,6 +192,10 @@ fn band_rate(radii: Radii, r: f64) -> f64 {
 /// The command of a robot at `pose` bound for `goal`, and the velocity it wants in the world
 /// frame (along the field, at the commanded speed).
 ///
+/// Within `stop_within` of the goal and slower than `v_max/10` the robot stops, where the
+/// source ends its run: the field's circle through the goal attracts slowly, and a robot that
+/// went on would pass the goal a few centimetres aside and go round the circle again.
+///
 /// At the centre `p_Δ` the field has no direction: there the robot takes its own heading for
 /// the field's (`θ_e = 0`, no feed-forward), where the source's normalisation of a zero vector
 /// would give NaN. Where `ω₀ = 0` the command turns by 0 (the source's `sat = 0/0`).
@@ -199,7 +209,11 @@ pub(super) fn command(g: &Gains, pose: Pose, goal: Pose) -> (Command, DVec2) {
     // logm(R_rᵀR): the angle from the field's direction to the heading.
     let error = atan2(t.perp_dot(h), t.dot(h));
     let c_p = g.c_p.unwrap_or(g.rho);
-    let v = g.v_max * libm::tanh(pose.p.distance(goal.p) / c_p + error.abs() / PI);
+    let d = pose.p.distance(goal.p);
+    let v = g.v_max * libm::tanh(d / c_p + error.abs() / PI);
+    if d < g.stop_within && v < g.v_max / 10.0 {
+        return (Command::default(), DVec2::ZERO);
+    }
     let omega = if r > 0.0 {
         let gr = band_rate(radii, r);
         let u = q / r;
@@ -347,6 +361,7 @@ mod tests {
         assert!(refused(json!({"k1": 2, "k2": 3, "k3": 3})).starts_with("planner.k3: "));
         assert!(refused(json!({"c_p": 0})).starts_with("planner.c_p: "));
         assert!(refused(json!({"kw_max": 0})).starts_with("planner.kw_max: "));
+        assert!(refused(json!({"stop_within": -1})).starts_with("planner.stop_within: "));
         assert!(refused(json!({"rho": "1"})).starts_with("planner.rho: "));
         let e = refused(json!({"r2": 8}));
         assert!(e.starts_with("planner") && e.contains("r2"), "{e}");
