@@ -23,6 +23,9 @@ use dvf::Simulation;
 mod testing;
 use testing::assert_close;
 
+mod common;
+use common::{dvf, stderr, stdout, TempFile};
+
 /// The scene of `Unicycle_AVF.slx` and `Unicycle_CVF.slx` (their masks): start
 /// (8.592…, 12.677) at 5.010 rad, goal (−8, 0) at 3π/2.
 const SOURCE_SCENE: &str = r#""robots": [{
@@ -118,8 +121,8 @@ fn follow(s: &Scenario, source: &Source) -> Outcome {
 }
 
 /// After the source's end the robot stays where it stopped, to the end of the run.
-fn stays(s: &Scenario, out: &Outcome) -> dvf::Report {
-    let report = dvf::run(s).unwrap();
+fn stays(s: &Scenario, out: &Outcome) -> ::dvf::Report {
+    let report = ::dvf::run(s).unwrap();
     assert_eq!(report.robots[0].final_pose, out.end_pose);
     report
 }
@@ -354,8 +357,8 @@ fn a_sweep_scene_runs_with_each_field_planner() {
     for name in ["avf", "cvf"] {
         for seed in 0..3 {
             let mut s = scenario(&recipe, seed).unwrap();
-            s.planner = dvf::planner::Spec::named(name);
-            let report = dvf::run(&s).unwrap();
+            s.planner = ::dvf::planner::Spec::named(name);
+            let report = ::dvf::run(&s).unwrap();
             assert_eq!(report.planner.as_deref(), Some(name));
             for r in &report.robots {
                 assert!(
@@ -366,5 +369,39 @@ fn a_sweep_scene_runs_with_each_field_planner() {
             }
             assert_eq!(report.violations, 0, "{name} {seed}");
         }
+    }
+}
+
+/// `dvf simulate FILE` runs the source's scene with `avf` and its gains, to the source's end
+/// (step 836, where the robot stops), and refuses bad gains with a message that names the
+/// field, without a panic.
+#[test]
+fn dvf_simulate_runs_a_field_planner_and_refuses_bad_gains() {
+    let file = TempFile::with_text(
+        "avf",
+        &format!(
+            r#"{{"duration": 12, "dt": 0.01, "params": {{"tol_position": 0.1}},
+                "planner": {{"name": "avf", "lambda": 2, "k_omega": 1}}, {SOURCE_SCENE}}}"#
+        ),
+    );
+    let o = dvf(&["simulate", file.arg()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let r: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(r["planner"], "avf", "{r}");
+    let converged = r["robots"][0]["converged_at"].as_f64().unwrap();
+    assert_close!(converged, 8.36, 1e-9);
+    for (planner, field) in [
+        (r#"{"name": "cvf", "k2": 3}"#, "planner.k2: "),
+        (r#"{"name": "avf", "lambda": 1}"#, "planner.lambda: "),
+        (r#"{"name": "cvf", "rho": -1}"#, "planner.rho: "),
+    ] {
+        let file = TempFile::with_text(
+            "bad",
+            &format!(r#"{{"planner": {planner}, {SOURCE_SCENE}}}"#),
+        );
+        let o = dvf(&["simulate", file.arg()]);
+        assert!(!o.status.success());
+        let e = stderr(&o);
+        assert!(e.contains(field) && !e.contains("panicked"), "{e}");
     }
 }
