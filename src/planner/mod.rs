@@ -36,7 +36,7 @@ macro_rules! planners {
         $(mod $module;)*
     };
 }
-planners!();
+planners!(clf, clf_cbf);
 
 /// A planner for every robot of a scene, one step at a time.
 pub trait Planner: Send + Sync + std::fmt::Debug {
