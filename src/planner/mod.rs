@@ -36,7 +36,7 @@ macro_rules! planners {
         $(mod $module;)*
     };
 }
-planners!(avf, cvf, orca, move_to_pose);
+planners!(avf, cvf, clf, clf_cbf, orca, move_to_pose);
 
 /// A planner for every robot of a scene, one step at a time.
 pub trait Planner: Send + Sync + std::fmt::Debug {
