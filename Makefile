@@ -4,7 +4,7 @@
 PORT ?= 8080
 export PATH := $(CURDIR)/node_modules/.bin:$(HOME)/.cargo/bin:$(PATH)
 
-.PHONY: package docs serve build-wasm test lint lint-comments lint-rust lint-js test-native test-node test-browser test-e2e test-python wheel tools bench bench-native bench-wasm bench-browser bench-peer picture
+.PHONY: package docs serve build-wasm test lint lint-comments lint-rust lint-js test-native test-node test-browser test-e2e test-python wheel tools bench bench-native bench-wasm bench-browser bench-peer picture compare-table
 
 tools:
 	bash .ci/install
@@ -121,6 +121,12 @@ test-python: wheel
 	  $(PYENV)/bin/python -m pytest -p no:cacheprovider python/tests
 
 test: tools lint test-native test-node test-browser test-e2e test-python
+
+# The book's comparison of planners (docs/book/src/command-line.md): the paper's examples and
+# 50 scenes of each sweep family, with and without limits, for every planner, as Markdown on
+# standard output (examples/compare.rs). Slow, and not part of `make test`.
+compare-table:
+	cargo run --release --example compare
 
 # The README's picture (docs/playground.png), from the release build: a separate target, so that
 # `make test` leaves the tree as it found it.

@@ -68,6 +68,8 @@
 //! - [`sim`]: the simulation, its metrics and its report;
 //! - [`grid`]: the neighbourhood structures that keep a step O(N);
 //! - [`sweep`]: random scenarios and their statistics;
+//! - [`planner`]: the planners the simulator steps, DVF and the ones it is compared with;
+//! - [`compare`]: a scenario run with each of several planners, the same metrics for each;
 //! - [`error`]: the errors, each naming the field at fault.
 //!
 //! The browser:
@@ -105,7 +107,8 @@ pub mod swarm;
 pub mod unicycle;
 
 // Scenes and their runs: the scenario format and its parameters, the paper's examples, the
-// simulation and its metrics, the neighbourhood structures, random sweeps.
+// simulation and its metrics, the neighbourhood structures, random sweeps, planners compared.
+pub mod compare;
 pub mod error;
 pub mod grid;
 pub mod params;

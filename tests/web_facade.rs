@@ -438,3 +438,61 @@ fn playground_rejects_bad_input_with_the_field_named() {
         "{m}"
     );
 }
+
+/// `planners()` lists the registry; `compare(scenario, planners)` returns the comparison of
+/// `dvf compare --json`, every number but the compute time the native library's (serialised
+/// here from the same call, its clock replaced by zero); a bad list is refused naming its field.
+#[wasm_bindgen_test]
+fn compare_crosses_as_the_command_lines_json() {
+    use dvf::compare::compare_with;
+    use dvf::planner::{Spec, PLANNERS};
+    use dvf::wasm::{compare, planners};
+    let list = js_sys::Array::from(&planners().unwrap());
+    assert_eq!(list.length() as usize, PLANNERS.len());
+    for (k, e) in PLANNERS.iter().enumerate() {
+        let name = js_sys::Reflect::get(&list.get(k as u32), &"name".into()).unwrap();
+        assert_eq!(name.as_string().as_deref(), Some(e.name));
+    }
+    let json = r#"{"name": "two", "duration": 6,
+        "robots": [{"start": [0, 0, 0], "goal": [6, 0, 0]},
+                   {"start": [6, 0.4, 3.14159], "goal": [0, 0.4, 3.14159]}]}"#;
+    let names = js_sys::JSON::parse(r#"["dvf-paper", "dvf"]"#).unwrap();
+    let ours = compare(scenario_from_json(json), names).unwrap();
+    let text: String = js_sys::JSON::stringify(&ours).unwrap().into();
+    let mut ours: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let s = dvf::Scenario::from_json(json).unwrap();
+    let lib = compare_with(&s, &[Spec::named("dvf-paper"), Spec::named("dvf")], || 0.0).unwrap();
+    let lib = serde_json::to_value(&lib).unwrap();
+    for p in ours["planners"].as_array_mut().unwrap() {
+        assert!(p["metrics"]["ms_per_step"].as_f64().unwrap() >= 0.0);
+        p["metrics"]["ms_per_step"] = 0.0.into();
+    }
+    // JSON.stringify writes 6.0 as 6, which reads back as an integer: numbers compare as f64.
+    fn numbers(v: &mut serde_json::Value) {
+        match v {
+            serde_json::Value::Number(n) => *v = n.as_f64().into(),
+            serde_json::Value::Array(a) => a.iter_mut().for_each(numbers),
+            serde_json::Value::Object(o) => o.values_mut().for_each(numbers),
+            _ => {}
+        }
+    }
+    let mut lib = lib;
+    numbers(&mut ours);
+    numbers(&mut lib);
+    assert_eq!(ours, lib);
+    let all = compare(scenario_from_json(json), JsValue::UNDEFINED).unwrap();
+    let runs = js_sys::Reflect::get(&all, &"planners".into()).unwrap();
+    assert_eq!(js_sys::Array::from(&runs).length() as usize, PLANNERS.len());
+    let bad = js_sys::JSON::parse(r#"["dvf", "rrt"]"#).unwrap();
+    let e = message(compare(scenario_from_json(json), bad).err().unwrap());
+    assert!(e.starts_with("planners[1]: unknown planner \"rrt\""), "{e}");
+    let e = message(
+        compare(scenario_from_json(json), "dvf".into())
+            .err()
+            .unwrap(),
+    );
+    assert!(e.starts_with("planners: expected an array"), "{e}");
+    let bad = js_sys::JSON::parse(r#"["dvf", 3]"#).unwrap();
+    let e = message(compare(scenario_from_json(json), bad).err().unwrap());
+    assert!(e.starts_with("planners[1]"), "{e}");
+}

@@ -28,6 +28,7 @@ from typing import Dict
 
 from . import _dvf
 from ._arrays import FieldGrid, command, field
+from ._compare import compare, planners
 from ._run import Run, simulate
 from ._scenario import Record, Scenario, ScenarioLike
 from ._sweep import DEFAULT_BARRIER_RATE, merge, sweep, sweep_shard
@@ -45,6 +46,8 @@ __all__ = [
     "sweep",
     "sweep_shard",
     "merge",
+    "compare",
+    "planners",
     "presets",
     "DEFAULT_PRESET",
     "DEFAULT_BARRIER_RATE",

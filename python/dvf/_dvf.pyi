@@ -58,6 +58,7 @@ class SweepPlan:
         barrier_rate: Optional[float] = 5.0,
         set: List[str] = ...,
         grid: List[str] = ...,
+        planner: Optional[str] = None,
     ) -> None: ...
     def summary(self) -> str:
         """The summary JSON of the sweep (what `dvf sweep` prints)."""
@@ -66,3 +67,10 @@ class SweepPlan:
 
 def merge(lines: List[str]) -> str:
     """The summary JSON of shards' outcome lines (what `dvf sweep merge` prints)."""
+
+def planners() -> List[Tuple[str, str, str, str]]:
+    """Every planner as (name, title, source, avoids), in the menus' order."""
+
+def compare(text: str, planners: Optional[List[str]] = None) -> str:
+    """The comparison JSON of scenario JSON run with each planner (JSON texts of names or
+    objects with gains; all of them when None): what `dvf compare --json` prints."""

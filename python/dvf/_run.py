@@ -164,17 +164,21 @@ class Run:
         )
 
 
-def simulate(scenario: ScenarioLike, every: int = 1) -> Run:
+def simulate(scenario: ScenarioLike, every: int = 1, planner: Optional[Any] = None) -> Run:
     """Simulates ``scenario`` to its end (``duration / dt`` steps of the unicycle
     ``ṗ = v·(cos θ, sin θ)``, ``θ̇ = ω`` under the controller of eqs. ``eq_nonholo_controller``,
     ``eq_nonholo_controller_ob_avoid`` and ``eq_nonholo_controller_co_avoid`` with the safety
     barrier), recording every robot every ``every`` steps and at the end.
 
     ``scenario`` is anything :class:`Scenario` takes (a preset's name, a dict, a file).
+    ``planner`` (a name such as ``"dvf-paper"``, or a dict with its name and gains; see
+    :func:`dvf.planners`) replaces the scenario's own ``planner`` (``dvf simulate --planner``).
     Returns a :class:`Run` whose report is the one ``dvf simulate`` prints, the same bits.
     The computation runs without the GIL.
     """
     s = _scenario(scenario)
+    if planner is not None:
+        s = s.replace(planner=planner)
     if isinstance(every, bool) or not isinstance(every, (int, np.integer)):
         raise ValueError(f"every: must be a whole number of steps, not {every!r}")
     if every < 1:

@@ -61,6 +61,7 @@ def sweep(
     set: Optional[Mapping[str, Any]] = None,
     grid: Optional[Mapping[str, Any]] = None,
     shard: Optional[Union[Tuple[int, int], str]] = None,
+    planner: Optional[Any] = None,
 ) -> Any:
     """Random scenarios ``seed … seed + count − 1`` of a family, run (``dvf sweep``).
 
@@ -81,6 +82,10 @@ def sweep(
     sweep at each value of each name (``{"k_a": [1, 2, 4]}`` or ``{"k_a": "1:4:1"}``, every
     combination; ``dvf sweep --grid``), and the summary is then ``{"groups": [...]}``, one group
     per point with its ``values``.
+
+    ``planner`` (a name, or a dict with its name and gains; see :func:`dvf.planners`) runs every
+    scenario with that planner (``dvf sweep --planner``): the summary and the outcomes record
+    it, and :func:`merge` refuses outcomes of different planners.
     """
     options = dict(
         family=family,
@@ -89,6 +94,7 @@ def sweep(
         spacing=_range("spacing", spacing),
         avoidance=avoidance,
         barrier_rate=barrier_rate,
+        planner=None if planner is None else _dumps(planner if isinstance(planner, str) else dict(planner), "planner"),
         **_settings(set, grid),
     )
     for name, value in (("count", count), ("seed", seed)):

@@ -13,9 +13,11 @@
 //!
 //! - `mod.rs`: presets, scenario checks, a whole run and the goal field on a grid;
 //! - `command.rs`: the controller over arrays of robots;
-//! - `sweep.rs`: random sweeps, their shards and the merge of shards.
+//! - `sweep.rs`: random sweeps, their shards and the merge of shards;
+//! - `compare.rs`: the planners, and a scenario run with each of several.
 
 mod command;
+mod compare;
 mod sweep;
 
 use crate::presets::{self as catalogue, PRESETS};
@@ -161,5 +163,7 @@ fn _dvf(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(command::command, m)?)?;
     m.add_class::<sweep::SweepPlan>()?;
     m.add_function(wrap_pyfunction!(sweep::merge, m)?)?;
+    m.add_function(wrap_pyfunction!(compare::planners, m)?)?;
+    m.add_function(wrap_pyfunction!(compare::compare, m)?)?;
     Ok(())
 }

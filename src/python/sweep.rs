@@ -27,7 +27,7 @@ impl SweepPlan {
     #[new]
     #[pyo3(signature = (count, seed = 0, family = "random", robots = None, obstacles = None,
         spacing = None, avoidance = "exit", barrier_rate = Some(DEFAULT_BARRIER_RATE),
-        set = Vec::new(), grid = Vec::new()))]
+        set = Vec::new(), grid = Vec::new(), planner = None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         count: usize,
@@ -40,7 +40,12 @@ impl SweepPlan {
         barrier_rate: Option<f64>,
         set: Vec<String>,
         grid: Vec<String>,
+        planner: Option<&str>,
     ) -> PyResult<Self> {
+        let planner = match planner {
+            Some(text) => super::compare::spec_of("planner", text)?,
+            None => crate::planner::Spec::default(),
+        };
         Plan::new(&Request {
             family: family.to_owned(),
             seed,
@@ -52,6 +57,7 @@ impl SweepPlan {
             barrier_rate,
             set,
             grid,
+            planner,
         })
         .map(Self)
         .map_err(value_error)

@@ -156,7 +156,7 @@ fn scene(
     obstacles: Vec<Obstacle>,
 ) -> Scenario {
     Scenario {
-        planner: crate::planner::Spec::default(),
+        planner: recipe.planner.clone(),
         name,
         bounds: None,
         duration: recipe.duration,

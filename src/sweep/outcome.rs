@@ -6,6 +6,7 @@ use super::recipe::{Family, Recipe};
 use super::settings::Values;
 use crate::grid::Neighbours;
 use crate::params::Avoidance;
+use crate::planner::Spec;
 use crate::scenario::Scenario;
 use crate::sim::smoothness::Sums;
 use crate::sim::{self, Report, Robot};
@@ -37,6 +38,9 @@ pub struct RecipeKey {
     /// `[[v_max min, max], [ω_max min, max]]`.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub limits: Option<[[f64; 2]; 2]>,
+    /// The planner (a line without one ran DVF).
+    #[serde(default, skip_serializing_if = "Spec::is_default")]
+    pub planner: Spec,
 }
 
 impl RecipeKey {
@@ -58,6 +62,7 @@ impl RecipeKey {
                     [*l.omega_max.start(), *l.omega_max.end()],
                 ]
             }),
+            planner: recipe.planner.clone(),
         }
     }
 }

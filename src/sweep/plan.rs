@@ -9,6 +9,7 @@ use super::settings::{label, points, value_of, with, Axis, Values};
 use super::summary::{sweep_points, Summaries};
 use crate::error::Error;
 use crate::params::{Avoidance, DEFAULT_BARRIER_RATE};
+use crate::planner::Spec;
 use crate::scenario::{Scenario, MAX_OBSTACLES, MAX_ROBOTS};
 use crate::sim::Report;
 
@@ -38,6 +39,8 @@ pub struct Request {
     pub set: Vec<String>,
     /// `NAME=a,b,c` or `NAME=start:stop:step` texts, the axes of the grid.
     pub grid: Vec<String>,
+    /// The planner every scenario runs with ([`crate::planner`]; DVF by default).
+    pub planner: Spec,
 }
 
 impl Default for Request {
@@ -54,6 +57,7 @@ impl Default for Request {
             barrier_rate: Some(DEFAULT_BARRIER_RATE),
             set: Vec::new(),
             grid: Vec::new(),
+            planner: Spec::default(),
         }
     }
 }
@@ -157,6 +161,11 @@ impl Plan {
             }
         }
         recipe.params.barrier_rate = request.barrier_rate;
+        // The planner's name and gains are checked before anything runs; a planner other
+        // than DVF is part of the recipe, and so of the sweep's identity: shards run with
+        // different planners do not merge.
+        request.planner.build()?;
+        recipe.planner = request.planner.clone();
         let mut set = Values::new();
         for text in &request.set {
             let Some((name, value)) = text.split_once('=') else {
@@ -296,6 +305,7 @@ mod tests {
         bad(|r| r.spacing = Some((3.0, 4.0)), "spacing");
         bad(|r| r.avoidance = "around".into(), "avoidance");
         bad(|r| r.barrier_rate = Some(-1.0), "barrier_rate");
+        bad(|r| r.planner = Spec::named("rrt"), "planner");
         bad(|r| r.set = vec!["k_v".into()], "set");
         bad(|r| r.set = vec!["k_v=1".into(), "k_v=2".into()], "set");
         bad(|r| r.set = vec!["k_v=-1".into()], "params.k_v");

@@ -3,6 +3,7 @@
 
 use crate::error::Error;
 use crate::params::Params;
+use crate::planner::Spec;
 use crate::scenario::{RobotSpec, Scenario, MAX_MAGNITUDE};
 use serde::{Deserialize, Serialize};
 use std::ops::RangeInclusive;
@@ -56,6 +57,10 @@ pub struct Recipe {
     /// The robots' limits `v_max` and `ω_max`, drawn for each scenario; `None` keeps those of
     /// `params`.
     pub limits: Option<Limits>,
+    /// The planner every scenario runs with; left out of the identity when it is DVF, so
+    /// that a DVF sweep keeps the identity it had before recipes named a planner.
+    #[serde(skip_serializing_if = "Spec::is_default")]
+    pub planner: Spec,
 }
 
 /// The ranges a sweep draws the robots' limits from ([`Recipe::limits`]), uniformly and for
@@ -100,6 +105,7 @@ impl Default for Recipe {
             dt: DT,
             params: Params::default(),
             limits: None,
+            planner: Spec::default(),
         }
     }
 }
@@ -171,7 +177,7 @@ impl Recipe {
             });
         }
         Scenario {
-            planner: crate::planner::Spec::default(),
+            planner: self.planner.clone(),
             name: String::new(),
             bounds: None,
             duration: self.duration,

@@ -4,6 +4,7 @@
 use super::outcome::Outcome;
 use super::recipe::{Recipe, DT};
 use super::settings::Values;
+use crate::planner::Spec;
 use crate::scenario::Scenario;
 use crate::sim::smoothness::{Smoothness, Sums};
 use crate::sim::Report;
@@ -23,6 +24,9 @@ pub struct Failure {
 /// What a sweep found.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Summary {
+    /// The planner the scenarios ran with, when it is not DVF.
+    #[serde(skip_serializing_if = "Spec::is_default")]
+    pub planner: Spec,
     /// First seed.
     pub seed: u64,
     /// Scenarios run.
@@ -170,6 +174,10 @@ impl Summary {
         }
         let count = outcomes.len();
         Summary {
+            planner: outcomes
+                .first()
+                .map(|o| o.recipe.planner.clone())
+                .unwrap_or_default(),
             seed,
             scenarios: count - skipped,
             robots,

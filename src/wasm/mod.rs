@@ -6,6 +6,7 @@
 //! - [`playground`]: `Playground`, the live, editable simulation behind `<dvf-playground>`,
 //!   its buffers read in place through one [`Playground::layout`](playground::Playground::layout);
 //! - [`run`]: `Run`, a whole recorded run; [`bench`]: `CrowdBench`, for timing;
+//! - [`compare`]: the planners and a scenario run with each of several (`dvf compare`);
 //! - [`convert`]: the one conversion of numbers, scenarios, errors and values.
 //!
 //! Scenarios come in as objects or JSON text; scenarios and reports leave as plain JS objects
@@ -15,11 +16,13 @@
 //! -1`). The TypeScript declarations of the package (`dvf.d.ts`) are generated from here.
 
 pub mod bench;
+pub mod compare;
 mod convert;
 pub mod playground;
 pub mod run;
 
 pub use bench::CrowdBench;
+pub use compare::{compare, planners};
 pub use playground::Playground;
 pub use run::{Run, MAX_SAMPLES_PER_ROBOT, MAX_SAMPLES_TOTAL, SAMPLE_STRIDE};
 

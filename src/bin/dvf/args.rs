@@ -4,6 +4,7 @@
 //! of [`Command`] and its argument structs carry plain comments.
 
 use clap::{Args, Parser, Subcommand};
+use dvf::planner::{entry, Spec};
 use dvf::presets::preset;
 use dvf::scenario::Scenario;
 use std::io::Read;
@@ -44,6 +45,15 @@ pub enum Command {
     Bench(BenchArgs),
     /// List the presets, or print one as a scenario file with `--preset NAME`.
     Presets(PresetsArgs),
+    /// Run a scenario with each of several planners (all of them by default) on the same
+    /// robots, limits and safety barrier, and print one row of metrics per planner: arrival
+    /// with heading, time to the last arrival, path length, control effort, peak curvature,
+    /// reversals, chattering, closest pair and clearance, violations and compute per step;
+    /// with `--json`, the comparison as JSON.
+    Compare(CompareArgs),
+    /// List the planners (`dvf compare --list`): name, title, what each avoids on its own, and
+    /// its source.
+    Planners(PlannersArgs),
 }
 
 /// What `dvf sweep` can do besides running scenarios.
@@ -70,6 +80,43 @@ pub struct SimulateArgs {
     /// With --csv: keep every K-th step (and the last) rather than every step.
     #[arg(long, value_name = "K", default_value_t = 1, requires = "csv", value_parser = clap::value_parser!(u64).range(1..))]
     pub every: u64,
+    /// Run with this planner rather than the scenario's `planner` (see `dvf planners`): a
+    /// name, or a JSON object with its gains (`{"name": "avf", "lambda": 2}`).
+    #[arg(long, value_name = "NAME", value_parser = parse_planner)]
+    pub planner: Option<Spec>,
+}
+
+// The arguments of `dvf compare`.
+#[derive(Args)]
+pub struct CompareArgs {
+    /// A scenario file (JSON), or `-` for standard input.
+    #[arg(value_name = "FILE", required_unless_present_any = ["preset", "list"], conflicts_with = "preset")]
+    pub file: Option<PathBuf>,
+    /// A built-in preset (see `dvf presets`).
+    #[arg(long, value_name = "NAME")]
+    pub preset: Option<String>,
+    /// The planners to run, comma-separated (all of `dvf planners` by default).
+    #[arg(long, value_name = "NAME,…", value_delimiter = ',')]
+    pub planners: Vec<String>,
+    /// Print the comparison as JSON rather than a table.
+    #[arg(long)]
+    pub json: bool,
+    /// Set NAME to VALUE in the scenario (repeatable): a parameter by its scenario file name
+    /// (v_max, omega_max, barrier_rate, k_v, …; `none` for no limit or no barrier), dt or
+    /// duration.
+    #[arg(long = "set", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub set: Vec<String>,
+    /// List the planners instead (as `dvf planners`).
+    #[arg(long, conflicts_with_all = ["file", "preset", "planners", "set"])]
+    pub list: bool,
+}
+
+// The arguments of `dvf planners`.
+#[derive(Args)]
+pub struct PlannersArgs {
+    /// Print the list as JSON: `[{name, title, source, avoids}]`.
+    #[arg(long)]
+    pub json: bool,
 }
 
 // The arguments of `dvf field`.
@@ -140,6 +187,11 @@ pub struct SweepArgs {
     /// DIR/seed-S-NAME=VALUE,….json).
     #[arg(long, value_name = "DIR")]
     pub write: Option<PathBuf>,
+    /// Run every scenario with this planner (see `dvf planners`): a name, or a JSON object
+    /// with its gains. The shard lines and the summary record it; shards of different
+    /// planners do not merge.
+    #[arg(long, value_name = "NAME", default_value = "dvf", value_parser = parse_planner)]
+    pub planner: Spec,
 }
 
 // The arguments of `dvf bench`.
@@ -202,6 +254,18 @@ impl Source {
             (None, None) => Err("give a scenario FILE or --preset NAME".into()),
         }
     }
+}
+
+/// A planner: a name of `dvf planners`, or a JSON object `{"name": …, gains…}` whose name is
+/// one; its gains are checked when it is built.
+fn parse_planner(text: &str) -> Result<Spec, String> {
+    let spec = if text.trim_start().starts_with('{') {
+        serde_json::from_str::<Spec>(text).map_err(|e| e.to_string())?
+    } else {
+        Spec::named(text.trim())
+    };
+    entry(&spec.name).map_err(|e| e.to_string())?;
+    Ok(spec)
 }
 
 /// `A..=B` (or a single number) as an inclusive range.

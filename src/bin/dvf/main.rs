@@ -1,11 +1,12 @@
-//! `dvf`: simulate scenarios, sample fields, run sweeps, time crowds and list presets from the
-//! command line.
+//! `dvf`: simulate scenarios, sample fields, run sweeps, compare planners, time crowds and list
+//! presets from the command line.
 //!
 //! Output is JSON on stdout. Invalid input exits with code 2 and one line on stderr that names
 //! the offending field; the program never panics on input.
 //!
-//! One module per subcommand ([`simulate`], [`field`], [`sweep`], [`bench`], [`presets`]), each
-//! with one `run` that writes its output; [`args`] declares the command line.
+//! One module per subcommand ([`simulate`], [`field`], [`sweep`], [`bench`], [`presets`],
+//! [`compare`] with `dvf planners`), each with one `run` that writes its output; [`args`]
+//! declares the command line.
 
 #[cfg(target_arch = "wasm32")]
 fn main() {}
@@ -14,6 +15,8 @@ fn main() {}
 mod args;
 #[cfg(not(target_arch = "wasm32"))]
 mod bench;
+#[cfg(not(target_arch = "wasm32"))]
+mod compare;
 #[cfg(not(target_arch = "wasm32"))]
 mod field;
 #[cfg(not(target_arch = "wasm32"))]
@@ -95,6 +98,8 @@ fn run(command: args::Command) -> Result<(), String> {
         Command::Sweep { action: None, args } => sweep::run(&mut out, *args),
         Command::Bench(a) => bench::run(&mut out, &a),
         Command::Presets(a) => presets::run(&mut out, &a),
+        Command::Compare(a) => compare::run(&mut out, &a),
+        Command::Planners(a) => compare::list(&mut out, a.json),
     }
 }
 

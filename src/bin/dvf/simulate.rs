@@ -12,7 +12,11 @@ use std::path::Path;
 
 /// Runs the scenario and writes its report as one JSON line.
 pub fn run(out: &mut impl Write, args: &SimulateArgs) -> Result<(), String> {
-    let s = args.source.load()?;
+    let mut s = args.source.load()?;
+    if let Some(planner) = &args.planner {
+        s.planner = planner.clone();
+        s.validate().map_err(|e| e.to_string())?;
+    }
     // The file is created (and its header written) before the run, so that a path that
     // cannot be written is refused at once rather than after hours of simulation.
     let mut csv = match &args.csv {

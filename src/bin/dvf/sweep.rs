@@ -24,6 +24,7 @@ pub fn run(out: &mut impl Write, args: SweepArgs) -> Result<(), String> {
         barrier_rate: parse_rate(&args.barrier_rate)?,
         set: args.set,
         grid: args.grid,
+        planner: args.planner,
     })
     .map_err(|e| e.to_string())?;
     let write = args.write;
