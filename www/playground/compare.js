@@ -103,6 +103,8 @@ export class CompareMode {
     this.dirty = false;
     /** @type {string | null} why the scene is not compared (too many robots, an error) */
     this.note = null;
+    /** The scenario and second planner of the runs shown or under way, as text: a step, a seek or a reset runs nothing. */
+    this.key = '';
     c.$('planner').addEventListener('change', (e) => this.setPlanner(e.target.value));
     c.$('compare').addEventListener('change', (e) => this.set(e.target.value || null));
   }
@@ -143,6 +145,7 @@ export class CompareMode {
     if (planner === this.planner) return;
     this.planner = planner;
     this.runs = null;
+    this.key = '';
     this.stale();
     this.c.viewChanged();
   }
@@ -168,10 +171,13 @@ export class CompareMode {
       this.show();
       return;
     }
+    const key = `${this.planner} ${JSON.stringify(c.model)}`;
+    if (key === this.key) return;
     if (this.busy) {
       this.dirty = true;
       return;
     }
+    this.key = key;
     this.#start();
   }
 
@@ -183,6 +189,7 @@ export class CompareMode {
     const id = ++this.id;
     this.busy = true;
     this.dirty = false;
+    this.note = null;
     this.worker ??= runWorker();
     /** @type {ComparedRun[]} */
     const runs = [];

@@ -7,11 +7,9 @@ export const TEMPLATE = `
 <link rel="stylesheet" href="${new URL('../playground.css', import.meta.url)}">
 <div class="pg" part="root">
   <div class="toolbar" role="toolbar" aria-label="Playground controls">
-    <span class="group full">
+    <span class="group full scene">
       <label>Preset <select data-id="preset" aria-label="Load a preset of the paper's examples"></select></label>
       <label data-id="crowd-box" hidden>N <input data-id="crowd-n" class="crowd-n" inputmode="numeric" autocomplete="off" aria-label="Robots in the crowd"></label>
-    </span>
-    <span class="group full planners">
       <label title="The planner that drives the robots (the scenario's planner)">Planner <select data-id="planner" aria-label="The planner that drives the robots"></select></label>
       <label title="Run the same scene with a second planner, drawn over this one, both in the results">vs <select data-id="compare" aria-label="Compare with a second planner"></select></label>
     </span>
