@@ -207,6 +207,15 @@ await run(async ({ base, newPage }) => {
     checkQuiet(again, 'compare link');
     await again.context().close();
 
+    const crowd = await openMain(newPage, `${base}/#crowd-200&compare=dvf-paper`);
+    const note = await part(crowd, 'compare-results').textContent();
+    check(
+      /up to 100 robots; this one has 200/.test(note) && (await part(crowd, 'compare').inputValue()) === 'dvf-paper',
+      `a scene above 100 robots is not compared, and the table says why (${note})`,
+    );
+    checkQuiet(crowd, 'crowd');
+    await crowd.context().close();
+
     const phone = await openMain(newPage, `${base}/#${SCENE}&compare=dvf-paper`, PHONE);
     await tableValues(phone);
     await frames(phone);
