@@ -167,6 +167,9 @@ await run(async ({ base, newPage }) => {
       check(same, `the table's ${ref.planner} column equals dvf simulate's (${JSON.stringify(got)})`);
     }
     await page.screenshot({ path: join(RESULTS, 'planners-compare-desktop.png') });
+    const [svg] = await Promise.all([page.waitForEvent('download'), part(page, 'export-svg').click()]);
+    const svgText = readFileSync(await svg.path(), 'utf8');
+    check(/#ea580c/i.test(svgText), 'the SVG export draws the compared run too');
 
     const state = await page.evaluate((s) => document.querySelector(s).viewState().compare, PG);
     await page.waitForFunction(() => location.hash.includes('&compare=dvf-paper'));
