@@ -28,13 +28,15 @@ const ROWS = [
 
 /**
  * The table of `runs` (the scenario's planner's, then the compared one's) of scenario `s`, and
- * a line on the conditions both share; `colour` marks the compared run's column.
+ * a line on the conditions both share; `colour` marks the compared run's column; `planners`
+ * (the wasm module's list) says what each planner avoids on its own, before the shared barrier.
  * @param {import('../playground/compare.js').ComparedRun[]} runs
  * @param {any} s
  * @param {string} colour
+ * @param {import('../playground/wasm-views.js').PlannerInfo[]} planners
  * @returns {HTMLElement[]}
  */
-export function compareTable(runs, s, colour) {
+export function compareTable(runs, s, colour, planners) {
   const table = el('table', undefined, 'results-table compare-table');
   table.dataset.id = 'compare-table';
   const head = el('tr');
@@ -46,6 +48,10 @@ export function compareTable(runs, s, colour) {
     head.append(th);
   });
   table.append(head);
+  const avoids = el('tr');
+  avoids.append(el('th', 'avoids on its own'));
+  for (const r of runs) avoids.append(el('td', planners.find((p) => p.name === r.planner)?.avoids ?? '—'));
+  table.append(avoids);
   for (const [key, label, value] of ROWS) {
     const row = el('tr');
     row.append(el('th', label));

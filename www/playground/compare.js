@@ -233,7 +233,7 @@ export class CompareMode {
     if (this.note) box.replaceChildren(el('p', this.note, 'muted'));
     else if (!this.runs) box.replaceChildren(el('p', `Running the scene with ${own} and ${this.planner}…`, 'muted'));
     else {
-      box.replaceChildren(...compareTable(this.runs, c.model, COMPARE_COLOUR));
+      box.replaceChildren(...compareTable(this.runs, c.model, COMPARE_COLOUR, this.list));
       box.dataset.ready = '';
     }
   }
