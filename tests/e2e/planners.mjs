@@ -166,6 +166,11 @@ await run(async ({ base, newPage }) => {
       );
       check(same, `the table's ${ref.planner} column equals dvf simulate's (${JSON.stringify(got)})`);
     }
+    const exact = await page.evaluate(
+      (s) => document.querySelector(s).shadowRoot.querySelector('td[data-metric="path_length"]').textContent,
+      PG,
+    );
+    check(!exact.startsWith('≈'), `a run kept at every step shows its path length as it is (${exact})`);
     await page.screenshot({ path: join(RESULTS, 'planners-compare-desktop.png') });
     const [svg] = await Promise.all([page.waitForEvent('download'), part(page, 'export-svg').click()]);
     const svgText = readFileSync(await svg.path(), 'utf8');
@@ -209,6 +214,20 @@ await run(async ({ base, newPage }) => {
     check(await part(again, 'compare-results').isHidden(), 'compare off hides the table and the legend');
     checkQuiet(again, 'compare link');
     await again.context().close();
+
+    // A run of more steps than the samples it keeps (src/wasm/run.rs): its path length is marked.
+    const long = await openMain(newPage, `${base}/#table2-obstacles&compare=dvf-paper`);
+    await tableValues(long);
+    const cell = (page) =>
+      page.evaluate(
+        (s) =>
+          document.querySelector(s).shadowRoot.querySelector('td[data-metric="path_length"][data-planner="dvf-paper"]')
+            .textContent,
+        PG,
+      );
+    check((await cell(long)).startsWith('≈ '), `a sampled path length is marked approximate (${await cell(long)})`);
+    checkQuiet(long, 'long run');
+    await long.context().close();
 
     const crowd = await openMain(newPage, `${base}/#crowd-200&compare=dvf-paper`);
     const note = await part(crowd, 'compare-results').textContent();

@@ -20,7 +20,12 @@ const ROWS = [
     'time to the last arrival (s)',
     (r) => [r.lastArrival, r.lastArrival == null ? 'not all' : r.lastArrival.toFixed(2)],
   ],
-  ['path_length', 'path length, all robots (m)', (r) => [r.pathLength, num(r.pathLength)]],
+  [
+    'path_length',
+    'path length, all robots (m)',
+    // A run of more steps than its samples sums |v| every few steps: marked as approximate.
+    (r) => [r.pathLength, `${r.everyStep ? '' : '≈ '}${num(r.pathLength)}`],
+  ],
   ['min_pair', 'closest pair (m)', (r) => [r.minPair, num(r.minPair)]],
   ['min_clearance', 'closest to an obstacle (m)', (r) => [r.minClearance, num(r.minClearance)]],
   ['violations', 'violations', (r) => [r.violations, String(r.violations)]],

@@ -56,6 +56,8 @@ export class ComparedRun {
      * samples (every step of a run of up to 2,000 steps, src/wasm/run.rs MAX_SAMPLES_PER_ROBOT).
      */
     this.pathLength = 0;
+    /** The run kept every step: the path length is exact, else a sum over every few steps. */
+    this.everyStep = samples - 1 >= report.steps;
     for (let i = 0; i < this.robots; i++) {
       for (let k = 0; k + 1 < samples; k++) {
         const o = (i * samples + k) * SAMPLE;
