@@ -98,6 +98,7 @@ test-e2e: package docs
 	node tests/e2e/reader.mjs
 	node tests/e2e/crowd.mjs
 	node tests/e2e/instrument.mjs
+	node tests/e2e/planners.mjs
 
 # The Python wheel (python/pyproject.toml, built by maturin; docs/book/src/python.md) in
 # target/wheels/: the library with its Python module (the `python` feature, without the command

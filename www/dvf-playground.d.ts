@@ -81,6 +81,11 @@ export interface Scenario {
   params: Params;
   /** Robots run independently (they neither sense nor avoid each other); omitted when false. */
   independent?: boolean;
+  /**
+   * The planner that drives the robots: a name (`"dvf-paper"`) or an object with its name and
+   * gains (`{"name": "avf", "lambda": 2}`); omitted for `dvf` with its defaults.
+   */
+  planner?: string | { name: string; [gain: string]: unknown };
   /** At least one robot, at most 10,000. */
   robots: RobotSpec[];
   obstacles: Obstacle[];
@@ -169,6 +174,7 @@ export type ChangeKind =
   | 'delete'
   | 'params'
   | 'preset'
+  | 'planner'
   | 'import'
   | 'undo'
   | 'redo';
@@ -182,6 +188,11 @@ export interface DvfPlaygroundAttributes {
   preset?: string;
   /** URL of a scenario JSON file; takes precedence over `preset`. */
   src?: string;
+  /**
+   * The planner that drives the robots (`dvf`, `dvf-paper`, …: the scenario's `planner`, with
+   * its default gains), set on the scene that `preset` or `src` loads and when it changes.
+   */
+  planner?: string;
   /** Present: the full toolbar and side panels. */
   controls?: boolean;
   /** Present: drags and keys edit the scene without the full controls. */
@@ -419,4 +430,6 @@ export interface ViewState {
   time: number;
   /** The world box in view ([xmin, ymin, xmax, ymax], m) once panned or zoomed, else null. */
   box: [number, number, number, number] | null;
+  /** The planner the scene is compared with (drawn over it, both in the results), or null. */
+  compare: string | null;
 }

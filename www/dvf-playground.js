@@ -51,6 +51,7 @@ export class DvfPlayground extends Base {
     return [
       'preset',
       'src',
+      'planner',
       'field',
       'theta0',
       'sensing',
@@ -148,8 +149,9 @@ export class DvfPlayground extends Base {
       return;
     }
     if (!this.#started || !c?.views) return;
-    if (name === 'preset' && value) this.#loadPreset(value);
-    else if (name === 'src' && value) c.loadUrl(value);
+    if (name === 'preset' && value) this.#loadPreset(value) && this.#applyPlanner();
+    else if (name === 'src' && value) c.loadUrl(value).then((ok) => ok && this.#applyPlanner());
+    else if (name === 'planner' && value) c.compare.setPlanner(value);
     else if (name === 'time') this.#seekAttribute();
     else if (name === 'autoplay') this.#observeScreen();
     else this.#readDisplayAttributes();
@@ -209,11 +211,24 @@ export class DvfPlayground extends Base {
     // A bad `src` or `preset` shows its message and stays (no other scene instead).
     const ok = src ? await c.loadUrl(src) : this.#loadPreset(this.getAttribute('preset') || c.defaultPreset);
     if (ok) {
+      this.#applyPlanner();
       // `loaded` tells of the scene at its `time`; autoplay plays on from there.
       await this.#seekAttribute();
       this.#autoplay();
     }
     this.#resolveLoaded();
+  }
+
+  /**
+   * `planner`: part of the scene that `preset` or `src` loads, set on it as it loads (not an
+   * undoable edit); an unknown name shows the message and keeps the scene's own planner.
+   */
+  #applyPlanner() {
+    const c = this.#controller;
+    const planner = this.getAttribute('planner');
+    if (!planner || !c.compare.setPlanner(planner)) return;
+    c.history.clear();
+    c.toolbar.update();
   }
 
   /** Loads preset `name`; a bad one shows its message in place of the scene. */

@@ -39,8 +39,8 @@ const LINK_FIELDS = ['arrows', 'curves', 'none'];
 
 /**
  * The view's part of a link for `v` (the element's viewState()): `&field=…&theta0=…&sensing=1
- * &robot=…&t=…&view=x0,y0,x1,y1`, each only when it is not the default (the robot numbered from
- * 1, as on the page).
+ * &robot=…&t=…&view=x0,y0,x1,y1&compare=…`, each only when it is not the default (the robot
+ * numbered from 1, as on the page; `compare` the planner the scene is compared with).
  * @param {import('./dvf-playground.js').ViewState | null} v
  */
 export function viewSuffix(v) {
@@ -52,6 +52,7 @@ export function viewSuffix(v) {
   if (v.robot > 0) parts.push(`robot=${v.robot + 1}`);
   if (v.time > 0) parts.push(`t=${Number(v.time.toFixed(6))}`);
   if (v.box) parts.push(`view=${v.box.map((x) => Number(x.toPrecision(7))).join(',')}`);
+  if (v.compare) parts.push(`compare=${v.compare}`);
   return parts.map((p) => `&${p}`).join('');
 }
 
@@ -67,6 +68,7 @@ function parseView(parts) {
     else if (key === 'sensing') v.sensing = value === '1';
     else if (key === 'robot' && Number.isInteger(n) && n >= 1) v.robot = n - 1;
     else if (key === 't' && value !== '' && Number.isFinite(n) && n >= 0) v.time = n;
+    else if (key === 'compare' && value !== '') v.compare = value;
     else if (key === 'view') {
       const box = value.split(',').map(Number);
       if (box.length === 4 && box.every(Number.isFinite)) v.box = /** @type {any} */ (box);

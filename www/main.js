@@ -1,6 +1,6 @@
 // The main page: one <dvf-playground> that fills the window, with the scene kept in the
 // address's fragment (#s=<scenario JSON>, or #<preset name>) so that a copied link reopens it,
-// and after it the view (`&field=curves&theta0=45&sensing=1&robot=3&t=5.2&view=x0,y0,x1,y1`,
+// and after it the view (`&field=curves&theta0=45&sensing=1&robot=3&t=5.2&view=x0,y0,x1,y1&compare=dvf-paper`,
 // io.js, viewSuffix).
 
 import './dvf-playground.js';

@@ -33,6 +33,7 @@ import { Playground, presetScenario } from '../pkg/dvf.js';
 import { Camera } from '../render/camera.js';
 import { changeParam } from './actions.js';
 import { Clock } from './clock.js';
+import { CompareMode } from './compare.js';
 import { Pin } from './ghost.js';
 import { Gestures } from './gestures.js';
 import { Help } from './help.js';
@@ -171,6 +172,8 @@ export class Controller {
         this.requestDraw();
       },
     });
+    /** The planner menu and the compare mode (compare.js). */
+    this.compare = new CompareMode(this);
     /** @type {Toolbar} */
     this.toolbar = new Toolbar(this);
     /** @type {ParamsPanel} */
@@ -216,8 +219,9 @@ export class Controller {
   /** Waits for the wasm module; false (and the message shown) when it cannot be loaded. */
   async ready() {
     try {
-      const { memory, limits, presets, defaultPreset, parameters } = await wasmReady();
+      const { memory, limits, presets, defaultPreset, parameters, planners } = await wasmReady();
       this.params.build(parameters);
+      this.compare.fillMenus(planners);
       this.limits = limits;
       this.presetList = presets;
       this.defaultPreset = defaultPreset;
@@ -314,6 +318,7 @@ export class Controller {
     this.params.fill(this.root.activeElement);
     this.toolbar.update();
     this.results.stale();
+    this.compare.stale();
     this.requestDraw();
   }
 
@@ -453,6 +458,7 @@ export class Controller {
     this.generation += 1;
     this.views.refresh();
     this.#fixSelection();
+    this.compare.stale();
     this.requestDraw();
   }
 
@@ -543,14 +549,14 @@ export class Controller {
   /** What the view shows, for a link (view-state.js). */
   viewState() {
     const display = { field: this.fieldMode, theta0: this.theta0, sensing: this.showSensing };
-    return viewStateOf(this.view(), display, this.focusRobot, this.views.time, this.camera.user);
+    return viewStateOf(this.view(), display, this.focusRobot, this.views.time, this.camera.user, this.compare.planner);
   }
 
   /** Shows what of view `state` is valid for this scene (view-state.js); a time as a seek. */
   setViewState(state) {
     if (!this.pg || !state) return;
     const shown = { field: this.fieldMode, theta0: this.theta0, sensing: this.showSensing };
-    const { display, inspect, camera, seek } = validViewState(state, shown, {
+    const { display, inspect, camera, seek, compare } = validViewState(state, shown, {
       robots: this.model.robots.length,
       duration: this.pg.duration,
       width: this.canvas.clientWidth,
@@ -563,6 +569,7 @@ export class Controller {
       this.camera.user = true;
     }
     if (seek !== null) this.clock.seekTo(seek);
+    if (compare !== undefined) this.compare.set(compare);
     this.requestDraw();
   }
 

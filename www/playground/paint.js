@@ -45,7 +45,7 @@ function clockText(scene) {
  * What the painter reads of the controller: the state a frame shows, and the parts whose
  * per-frame text it updates.
  * @typedef {Pick<import('./controller.js').Controller, '$' | 'canvas' | 'fieldMode' | 'focusRobot'
- *   | 'generation' | 'host' | 'input' | 'limits' | 'loop' | 'model' | 'pg' | 'pin'
+ *   | 'compare' | 'generation' | 'host' | 'input' | 'limits' | 'loop' | 'model' | 'pg' | 'pin'
  *   | 'recorder' | 'requestDraw' | 'results' | 'selection' | 'selectionPanel' | 'showMessage'
  *   | 'showSensing' | 'theta0' | 'toolbar' | 'view' | 'views'>} PaintHost
  */
@@ -107,7 +107,7 @@ export class Painter {
         c.requestDraw();
       }, TRAIL_SETTLE_MS);
     }
-    drawScene(ctx, view, scene, c.pin.ghost ? () => drawGhost(ctx, view, c.pin.ghost) : null);
+    drawScene(ctx, view, scene, this.underlay(ctx, view, scene.time));
     drawViolationMarks(ctx, view, c.results.marks, scene.time);
     const loop = c.loop;
     const slowed =
@@ -174,10 +174,22 @@ export class Painter {
     const view = c.view();
     const scene = { ...this.scene(view, width, height, 1), vector: true };
     const g = /** @type {any} */ (ctx);
-    drawScene(g, view, scene, c.pin.ghost ? () => drawGhost(g, view, c.pin.ghost) : null);
+    drawScene(g, view, scene, this.underlay(g, view, scene.time));
     drawViolationMarks(g, view, c.results.marks, scene.time);
     stamp(g, c.model.name, clockText(scene));
     return ctx.toString();
+  }
+
+  /**
+   * What is drawn under the scene's marks, over its grid: the pinned run's paths (ghost.js) and
+   * the compared planner's run at time `time` (compare.js).
+   */
+  underlay(ctx, view, time) {
+    const c = this.c;
+    return () => {
+      if (c.pin.ghost) drawGhost(ctx, view, c.pin.ghost);
+      c.compare.draw(ctx, view, time);
+    };
   }
 
   hintText() {

@@ -7,9 +7,11 @@ export const TEMPLATE = `
 <link rel="stylesheet" href="${new URL('../playground.css', import.meta.url)}">
 <div class="pg" part="root">
   <div class="toolbar" role="toolbar" aria-label="Playground controls">
-    <span class="group full">
+    <span class="group full scene">
       <label>Preset <select data-id="preset" aria-label="Load a preset of the paper's examples"></select></label>
       <label data-id="crowd-box" hidden>N <input data-id="crowd-n" class="crowd-n" inputmode="numeric" autocomplete="off" aria-label="Robots in the crowd"></label>
+      <label title="The planner that drives the robots (the scenario's planner)">Planner <select data-id="planner" aria-label="The planner that drives the robots"></select></label>
+      <label title="Run the same scene with a second planner, drawn over this one, both in the results">vs <select data-id="compare" aria-label="Compare with a second planner"></select></label>
     </span>
     <span class="group">
       <button type="button" data-id="play" aria-pressed="false" title="Play / pause (Space)">Play</button>
@@ -51,6 +53,7 @@ export const TEMPLATE = `
         aria-label="Playground canvas. Drag robots, goals and obstacles; keys: Space play, S step, R reset, arrows move, Q and E turn, A add robot, O add obstacle, Delete, brackets select, F fit."></canvas>
       <div class="overlay">
         <div class="overlay-row"><div class="clock" data-id="clock"></div><div class="title" data-id="title"></div></div>
+        <div class="compare-legend" data-id="compare-legend" hidden></div>
         <button type="button" class="violations full" data-id="violations" hidden></button>
         <div class="hint" data-id="hint"></div>
       </div>
@@ -79,6 +82,7 @@ export const TEMPLATE = `
       </section>
       <section>
         <h3>Results <button type="button" data-id="copy-results" class="small" disabled title="Copy the report (the JSON of dvf simulate)">Copy JSON</button><button type="button" data-id="pin" class="small">Pin</button></h3>
+        <div class="results compare" data-id="compare-results" hidden></div>
         <div class="results pinned" data-id="pinned" hidden></div>
         <div class="results" data-id="results"></div>
       </section>

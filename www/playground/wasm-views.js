@@ -3,7 +3,7 @@
 // addresses (pointers) of the simulation's arrays and knows their layouts (strides): every
 // other module indexes arrays with the strides exported here.
 
-import init, { defaultPreset, parameters, playgroundLimits, presets } from '../pkg/dvf.js';
+import init, { defaultPreset, parameters, planners, playgroundLimits, presets } from '../pkg/dvf.js';
 import { messageOf, useParameters } from './message.js';
 
 // The records of the flat arrays come from the module (`playgroundLimits()`, src/wasm/mod.rs),
@@ -34,6 +34,7 @@ export let SAMPLE_STRIDE = 0;
  *   curveStride: number, sampleStride: number,
  * }} Limits  the playground's limits and layouts (`playgroundLimits()`)
  * @typedef {{name: string, summary: string}} PresetInfo
+ * @typedef {{name: string, title: string, source: string, avoids: string}} PlannerInfo
  */
 
 /**
@@ -50,7 +51,7 @@ const defaultWasmUrl = () => new URL('../pkg/dvf_bg.wasm', import.meta.url);
 let wasmSource;
 /**
  * @type {Promise<{memory: WebAssembly.Memory, limits: Limits, presets: PresetInfo[], defaultPreset: string,
- *   parameters: {rows: import('../panels/params.js').Parameter[], modes: string[]}}> | null}
+ *   parameters: {rows: import('../panels/params.js').Parameter[], modes: string[]}, planners: PlannerInfo[]}> | null}
  */
 let ready = null;
 
@@ -92,7 +93,8 @@ export function runWorker() {
 /**
  * The module, initialised once per page on first call (never at import: a page, or a server
  * rendering one, that imports the element loads nothing until an element asks): its memory,
- * limits, presets, default preset and parameter table (which the messages take their names from).
+ * limits, presets, default preset, parameter table (which the messages take their names from)
+ * and planners.
  */
 export function wasmReady() {
   ready ??= init({ module_or_path: wasmSourceNow() }).then((wasm) => {
@@ -108,7 +110,14 @@ export function wasmReady() {
     });
     const table = parameters();
     useParameters(table.rows);
-    return { memory: wasm.memory, limits, presets: presets(), defaultPreset: defaultPreset(), parameters: table };
+    return {
+      memory: wasm.memory,
+      limits,
+      presets: presets(),
+      defaultPreset: defaultPreset(),
+      parameters: table,
+      planners: planners(),
+    };
   });
   return ready;
 }
