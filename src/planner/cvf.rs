@@ -345,6 +345,39 @@ mod tests {
         assert_close!(f.angle_to(heading(0.4)), 0.0, 1e-12);
     }
 
+    /// Random poses, goals and gains, at every scale a scenario allows (coordinates up to
+    /// 1e6), robots on their goal's position or on the field's singular points among them:
+    /// every command and field is finite.
+    #[test]
+    fn every_command_is_finite() {
+        let mut rng = crate::testing::XorShift(0x005E_EDF1_E1D5);
+        for i in 0..20_000 {
+            let g = Gains {
+                rho: 10f64.powf(rng.range(-3.0, 3.0)),
+                v_max: 10f64.powf(rng.range(-3.0, 3.0)),
+                k1: rng.range(0.1, 5.0),
+                k2: rng.range(5.0, 10.0),
+                k3: rng.range(10.0, 20.0),
+                c_p: Some(10f64.powf(rng.range(-3.0, 3.0))),
+                kw_max: 10f64.powf(rng.range(-3.0, 3.0)),
+                stop_within: rng.range(0.0, 1.0),
+            };
+            g.check().unwrap();
+            let scale = 10f64.powf(rng.range(-6.0, 6.0));
+            let goal = pose(rng.range(-1.0, 1.0) * scale, rng.range(-1.0, 1.0) * scale, rng.heading());
+            let at = match i % 4 {
+                0 => pose(goal.p.x, goal.p.y, rng.heading()),
+                1 => {
+                    let centre = goal.p + g.k2 * g.rho * heading(goal.theta).perp();
+                    pose(centre.x, centre.y, rng.heading())
+                }
+                _ => pose(goal.p.x + rng.range(-1.0, 1.0) * scale, goal.p.y + rng.range(-1.0, 1.0) * scale, rng.heading()),
+            };
+            let (c, f) = command(&g, at, goal);
+            assert!(c.v.is_finite() && c.omega.is_finite() && f.is_finite(), "{g:?} {at:?} {goal:?}: {c:?}");
+        }
+    }
+
     fn refused(gains: serde_json::Value) -> String {
         let serde_json::Value::Object(map) = gains else {
             unreachable!()
