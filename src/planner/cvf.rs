@@ -220,11 +220,13 @@ pub(super) fn command(g: &Gains, pose: Pose, goal: Pose) -> (Command, DVec2) {
         // omega_r.m: the rate of the field's direction along ṗ = v·h.
         let feed = v * (u.perp().dot(h) / r + gr * u.dot(h));
         // kw.m: the dynamic gain; a NaN (0/0 at θ_e = 0) or ∞ takes k_ω,max, as MATLAB's min.
+        // On the field (θ_e = 0) the feedback is 0 whatever the gain, even the −∞ that radii
+        // whose band rate g exceeds 1/ρ would give there.
         let k = if r >= g.rho { 1.0 / r + gr } else { r / (g.rho * g.rho) };
         let beta = pose.theta - atan2(q.y, q.x) + atan2(gr, 1.0 / r);
         let k0 = (1.0 / g.rho - k * crate::maths::sin(beta).abs()) / error.abs() * v;
         let kw = g.kw_max.min(k0);
-        let omega0 = -kw * error + feed;
+        let omega0 = if error == 0.0 { feed } else { -kw * error + feed };
         let most = v / g.rho;
         omega0.clamp(-most, most)
     } else {
@@ -332,6 +334,37 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Radii whose band is narrow make `kw.m`'s gain −∞ on the field (`θ_e = 0` with a
+    /// negative numerator): the feedback is 0 there, not NaN. The poses are those of the band
+    /// whose heading the field's direction gives exactly.
+    #[test]
+    fn on_the_field_a_narrow_band_gives_no_nan() {
+        let g = Gains {
+            k1: 4.0,
+            k2: 4.1,
+            ..Gains::default()
+        };
+        let goal = Pose::default();
+        let centre = DVec2::new(0.0, 4.1);
+        let mut found = 0;
+        for i in 1..200 {
+            let r = 4.0 + 0.1 * f64::from(i) / 200.0;
+            for j in 0..64 {
+                let q = r * heading(f64::from(j) * 0.098);
+                let t = direction(Radii::of(&g), q).unwrap();
+                let at = pose(centre.x + q.x, centre.y + q.y, atan2(t.y, t.x));
+                let h = heading(at.theta);
+                if atan2(t.perp_dot(h), t.dot(h)) != 0.0 {
+                    continue;
+                }
+                found += 1;
+                let (c, _) = command(&g, at, goal);
+                assert!(c.omega.is_finite(), "{at:?}: {c:?}");
+            }
+        }
+        assert!(found > 0);
     }
 
     /// At the centre the field has no direction: no NaN.
