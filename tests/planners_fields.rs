@@ -1,6 +1,6 @@
 //! The field planners `avf` and `cvf` (src/planner/avf.rs, src/planner/cvf.rs) against their
-//! source, the DVF authors' comparison code (github.com/Y1kee/CVF-for-Nonholonomic-Motion-Planning):
-//! the scenes of its Simulink models driven through the simulator, step by step and to the
+//! source, the DVF authors' comparison code
+//! (github.com/Y1kee/CVF-for-Nonholonomic-Motion-Planning): the scenes of its Simulink models driven through the simulator, step by step and to the
 //! source's own end condition; and a scene of the sweep families with each of them.
 //!
 //! The expected numbers come from the source's MATLAB functions (`Controller_AVF.m`,

@@ -8,7 +8,8 @@
 //! field is `F = λ(p̂ᵀq)q − (qᵀq)p̂ = ((λ − 1)x² − y², λxy)`. Its integral curves are
 //! `|q| = c·|sin ∠q|^(λ−1)`: for `λ > 1` every one of them ends at the goal tangent to `p̂`
 //! (for `λ = 2`, the source's, they are the circles through the goal tangent to `p̂`), but for
-//! the half line ahead of the goal, the field's separatrix, where it points away from the goal. The robot drives forward at `v = v_max·tanh|p − p_d|` and turns with
+//! the half line ahead of the goal, the field's separatrix, where it points away from the
+//! goal. The robot drives forward at `v = v_max·tanh|p − p_d|` and turns with
 //! `ω = −k_ω·wrap(θ − θ_d − ∠F) + dφ/dt`, `dφ/dt` the rate of the field's direction along the
 //! robot's motion. The source takes that rate by central differences of the normalised field
 //! (step 1e-6); here it is the exact derivative, `F × (J_F q̇)/|F|²`, with `F` and `J_F` taken
@@ -339,13 +340,23 @@ mod tests {
             };
             g.check().unwrap();
             let scale = 10f64.powf(rng.range(-6.0, 6.0));
-            let goal = pose(rng.range(-1.0, 1.0) * scale, rng.range(-1.0, 1.0) * scale, rng.heading());
+            let offset = |rng: &mut crate::testing::XorShift| {
+                scale * DVec2::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0))
+            };
+            let goal = Pose {
+                p: offset(&mut rng),
+                theta: rng.heading(),
+            };
             let at = match i % 4 {
                 0 => pose(goal.p.x, goal.p.y, rng.heading()),
-                _ => pose(goal.p.x + rng.range(-1.0, 1.0) * scale, goal.p.y + rng.range(-1.0, 1.0) * scale, rng.heading()),
+                _ => {
+                    let p = goal.p + offset(&mut rng);
+                    pose(p.x, p.y, rng.heading())
+                }
             };
             let (c, f) = command(&g, at, goal);
-            assert!(c.v.is_finite() && c.omega.is_finite() && f.is_finite(), "{g:?} {at:?} {goal:?}: {c:?}");
+            let finite = c.v.is_finite() && c.omega.is_finite() && f.is_finite();
+            assert!(finite, "{g:?} {at:?} {goal:?}: {c:?}");
         }
     }
 
