@@ -1,6 +1,6 @@
 //! The field planners `avf` and `cvf` (src/planner/avf.rs, src/planner/cvf.rs) against their
-//! source, the DVF authors' comparison code (github.com/Y1kee/CVF-for-Nonholonomic-Motion-Planning):
-//! the scenes of its Simulink models driven through the simulator, step by step and to the
+//! source, the DVF authors' comparison code
+//! (github.com/Y1kee/CVF-for-Nonholonomic-Motion-Planning): the scenes of its Simulink models driven through the simulator, step by step and to the
 //! source's own end condition; and a scene of the sweep families with each of them.
 //!
 //! The expected numbers come from the source's MATLAB functions (`Controller_AVF.m`,
@@ -344,32 +344,53 @@ fn cvf_drives_the_papers_first_example_with_its_gains() {
     stays(&s, &out);
 }
 
-/// Each field planner runs a scene of the sweep's random family (4 robots, 2 obstacles)
-/// without a NaN, a panic or a collision (the shared barrier is their only avoidance).
-#[test]
-fn a_sweep_scene_runs_with_each_field_planner() {
-    let recipe = Recipe {
+/// Scenes of the sweep's random family (4 robots, 2 obstacles) and of its formation family (9
+/// robots, 1 obstacle) run with the planner `name` without a NaN in any pose or command, a
+/// panic or a collision (the shared barrier is the field planners' only avoidance).
+fn sweep_scenes_run_with(name: &str) {
+    let random = Recipe {
         robots: 4..=4,
         obstacles: 2..=2,
         duration: 60.0,
         ..Recipe::default()
     };
-    for name in ["avf", "cvf"] {
+    let formation = Recipe {
+        robots: 9..=9,
+        obstacles: 1..=1,
+        duration: 60.0,
+        ..Recipe::formation()
+    };
+    for recipe in [random, formation] {
         for seed in 0..3 {
             let mut s = scenario(&recipe, seed).unwrap();
             s.planner = ::dvf::planner::Spec::named(name);
-            let report = ::dvf::run(&s).unwrap();
-            assert_eq!(report.planner.as_deref(), Some(name));
-            for r in &report.robots {
-                assert!(
-                    r.final_pose.iter().all(|x| x.is_finite()),
-                    "{name} {seed}: {r:?}"
-                );
-                assert!(r.position_error.is_finite(), "{name} {seed}: {r:?}");
+            let mut sim = Simulation::new(&s).unwrap();
+            for _ in 0..s.steps() {
+                sim.step();
+                for r in sim.robots() {
+                    let c = r.last.command;
+                    let finite = r.pose.p.is_finite() && r.pose.theta.is_finite();
+                    assert!(
+                        finite && c.v.is_finite() && c.omega.is_finite(),
+                        "{name} {seed}"
+                    );
+                }
             }
+            let report = sim.report();
+            assert_eq!(report.planner.as_deref(), Some(name));
             assert_eq!(report.violations, 0, "{name} {seed}");
         }
     }
+}
+
+#[test]
+fn sweep_scenes_run_with_avf() {
+    sweep_scenes_run_with("avf");
+}
+
+#[test]
+fn sweep_scenes_run_with_cvf() {
+    sweep_scenes_run_with("cvf");
 }
 
 /// `dvf simulate FILE` runs the source's scene with `avf` and its gains, to the source's end

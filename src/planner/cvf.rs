@@ -220,11 +220,13 @@ pub(super) fn command(g: &Gains, pose: Pose, goal: Pose) -> (Command, DVec2) {
         // omega_r.m: the rate of the field's direction along ṗ = v·h.
         let feed = v * (u.perp().dot(h) / r + gr * u.dot(h));
         // kw.m: the dynamic gain; a NaN (0/0 at θ_e = 0) or ∞ takes k_ω,max, as MATLAB's min.
+        // On the field (θ_e = 0) the feedback is 0 whatever the gain, even the −∞ that radii
+        // whose band rate g exceeds 1/ρ would give there.
         let k = if r >= g.rho { 1.0 / r + gr } else { r / (g.rho * g.rho) };
         let beta = pose.theta - atan2(q.y, q.x) + atan2(gr, 1.0 / r);
         let k0 = (1.0 / g.rho - k * crate::maths::sin(beta).abs()) / error.abs() * v;
         let kw = g.kw_max.min(k0);
-        let omega0 = -kw * error + feed;
+        let omega0 = if error == 0.0 { feed } else { -kw * error + feed };
         let most = v / g.rho;
         omega0.clamp(-most, most)
     } else {
@@ -270,19 +272,79 @@ mod tests {
             c_p: Some(6.0),
             ..base
         };
+        // (gains, pose, v, ω, ∠ of the field); the first is clipped to |ω| = v/ρ, the
+        // second is inside ρ, the sixth has a dynamic gain below 1.
         let cases = [
-            // (gains, pose, v, ω, ∠ of the field); the first is clipped to |ω| = v/ρ, the
-            // second is inside ρ, the sixth has a dynamic gain below 1.
-            (base, pose(0.5, 0.1, 1.7), 2.999_999_904_677_949_3, 2.999_999_904_677_949_3, 0.197_395_559_849_881_7),
-            (base, pose(-0.3, 0.2, 0.0), 2.999_999_759_152_147, -2.215_384_437_527_746_3, 2.553_590_050_042_224_4),
-            (base, pose(2.0, 1.0, 0.3), 2.999_999_989_914_560_4, -0.054_930_035_746_132_866, 0.463_647_609_000_806_26),
-            (base, pose(5.0, -2.0, 2.0), 2.999_999_999_993_741, -2.778_564_321_542_261_5, -0.015_131_148_975_717_915),
-            (base, pose(-7.0, 6.0, -1.0), 2.999_983_483_312_005, -2.303_696_631_863_903, -2.001_179_947_657_839),
-            (base, pose(-6.0, -3.0, 1.2), 2.999_165_391_787_767_6, -2.654_339_539_741_602, -1.421_762_675_044_500_7),
-            (base, pose(8.592_294_692_468_84, 12.676_570_671_638_1, 5.009_813_579_478_41), 3.0, -1.045_709_548_487_403, -2.166_473_290_145_374_3),
-            (wide, pose(-8.3, 0.4, 2.0), 0.802_973_868_854_288_9, 0.321_327_693_301_227_4, -1.591_066_025_012_951_6),
-            (small, pose(3.0, 4.0, -2.5), 1.929_096_847_403_443, -0.216_121_936_080_509_84, -2.677_945_044_588_987),
-            (small, pose(-9.0, 1.0, 0.1), 0.982_453_096_355_203_4, -1.750_107_001_754_041_7, -0.848_677_561_998_836_5),
+            (
+                base,
+                pose(0.5, 0.1, 1.7),
+                2.999_999_904_677_949_3,
+                2.999_999_904_677_949_3,
+                0.197_395_559_849_881_7,
+            ),
+            (
+                base,
+                pose(-0.3, 0.2, 0.0),
+                2.999_999_759_152_147,
+                -2.215_384_437_527_746_3,
+                2.553_590_050_042_224_4,
+            ),
+            (
+                base,
+                pose(2.0, 1.0, 0.3),
+                2.999_999_989_914_560_4,
+                -0.054_930_035_746_132_866,
+                0.463_647_609_000_806_26,
+            ),
+            (
+                base,
+                pose(5.0, -2.0, 2.0),
+                2.999_999_999_993_741,
+                -2.778_564_321_542_261_5,
+                -0.015_131_148_975_717_915,
+            ),
+            (
+                base,
+                pose(-7.0, 6.0, -1.0),
+                2.999_983_483_312_005,
+                -2.303_696_631_863_903,
+                -2.001_179_947_657_839,
+            ),
+            (
+                base,
+                pose(-6.0, -3.0, 1.2),
+                2.999_165_391_787_767_6,
+                -2.654_339_539_741_602,
+                -1.421_762_675_044_500_7,
+            ),
+            (
+                base,
+                pose(8.592_294_692_468_84, 12.676_570_671_638_1, 5.009_813_579_478_41),
+                3.0,
+                -1.045_709_548_487_403,
+                -2.166_473_290_145_374_3,
+            ),
+            (
+                wide,
+                pose(-8.3, 0.4, 2.0),
+                0.802_973_868_854_288_9,
+                0.321_327_693_301_227_4,
+                -1.591_066_025_012_951_6,
+            ),
+            (
+                small,
+                pose(3.0, 4.0, -2.5),
+                1.929_096_847_403_443,
+                -0.216_121_936_080_509_84,
+                -2.677_945_044_588_987,
+            ),
+            (
+                small,
+                pose(-9.0, 1.0, 0.1),
+                0.982_453_096_355_203_4,
+                -1.750_107_001_754_041_7,
+                -0.848_677_561_998_836_5,
+            ),
         ];
         for (g, at, v, omega, angle) in cases {
             let (c, f) = command(&g, at, goal);
@@ -334,6 +396,37 @@ mod tests {
         }
     }
 
+    /// Radii whose band is narrow make `kw.m`'s gain −∞ on the field (`θ_e = 0` with a
+    /// negative numerator): the feedback is 0 there, not NaN. The poses are those of the band
+    /// whose heading the field's direction gives exactly.
+    #[test]
+    fn on_the_field_a_narrow_band_gives_no_nan() {
+        let g = Gains {
+            k1: 4.0,
+            k2: 4.1,
+            ..Gains::default()
+        };
+        let goal = Pose::default();
+        let centre = DVec2::new(0.0, 4.1);
+        let mut found = 0;
+        for i in 1..200 {
+            let r = 4.0 + 0.1 * f64::from(i) / 200.0;
+            for j in 0..64 {
+                let q = r * heading(f64::from(j) * 0.098);
+                let t = direction(Radii::of(&g), q).unwrap();
+                let at = pose(centre.x + q.x, centre.y + q.y, atan2(t.y, t.x));
+                let h = heading(at.theta);
+                if atan2(t.perp_dot(h), t.dot(h)) != 0.0 {
+                    continue;
+                }
+                found += 1;
+                let (c, _) = command(&g, at, goal);
+                assert!(c.omega.is_finite(), "{at:?}: {c:?}");
+            }
+        }
+        assert!(found > 0);
+    }
+
     /// At the centre the field has no direction: no NaN.
     #[test]
     fn at_the_centre_it_keeps_its_heading() {
@@ -343,6 +436,49 @@ mod tests {
         assert!(c.v.is_finite() && c.v > 0.0, "{c:?}");
         assert_eq!(c.omega, 0.0);
         assert_close!(f.angle_to(heading(0.4)), 0.0, 1e-12);
+    }
+
+    /// Random poses, goals and gains, at every scale a scenario allows (coordinates up to
+    /// 1e6), robots on their goal's position or on the field's singular points among them:
+    /// every command and field is finite.
+    #[test]
+    fn every_command_is_finite() {
+        let mut rng = crate::testing::XorShift(0x005E_EDF1_E1D5);
+        for i in 0..20_000 {
+            let g = Gains {
+                rho: 10f64.powf(rng.range(-3.0, 3.0)),
+                v_max: 10f64.powf(rng.range(-3.0, 3.0)),
+                k1: rng.range(0.1, 5.0),
+                k2: rng.range(5.0, 10.0),
+                k3: rng.range(10.0, 20.0),
+                c_p: Some(10f64.powf(rng.range(-3.0, 3.0))),
+                kw_max: 10f64.powf(rng.range(-3.0, 3.0)),
+                stop_within: rng.range(0.0, 1.0),
+            };
+            g.check().unwrap();
+            let scale = 10f64.powf(rng.range(-6.0, 6.0));
+            let offset = |rng: &mut crate::testing::XorShift| {
+                scale * DVec2::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0))
+            };
+            let goal = Pose {
+                p: offset(&mut rng),
+                theta: rng.heading(),
+            };
+            let at = match i % 4 {
+                0 => pose(goal.p.x, goal.p.y, rng.heading()),
+                1 => {
+                    let centre = goal.p + g.k2 * g.rho * heading(goal.theta).perp();
+                    pose(centre.x, centre.y, rng.heading())
+                }
+                _ => {
+                    let p = goal.p + offset(&mut rng);
+                    pose(p.x, p.y, rng.heading())
+                }
+            };
+            let (c, f) = command(&g, at, goal);
+            let finite = c.v.is_finite() && c.omega.is_finite() && f.is_finite();
+            assert!(finite, "{g:?} {at:?} {goal:?}: {c:?}");
+        }
     }
 
     fn refused(gains: serde_json::Value) -> String {
