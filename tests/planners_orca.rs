@@ -1,7 +1,12 @@
 //! The `orca` and `move-to-pose` planners (src/planner/orca.rs, src/planner/move_to_pose.rs)
 //! against their sources: each source's own example run through the simulator, its numbers
 //! checked within a tolerance that says where the two may differ; then a scene of the sweep
-//! families run with each, and bad gains refused naming the field.
+//! families run with each, and bad gains refused naming the field. They run natively, in Node
+//! (`wasm-pack test --node`) and in Chromium (`make test-browser`).
+
+#[path = "../src/testing.rs"]
+mod testing;
+use testing::test;
 
 use dvf::scenario::Scenario;
 use dvf::Simulation;
@@ -384,4 +389,74 @@ fn bad_gains_are_refused_naming_the_field() {
         .to_string();
         assert!(e.starts_with(&format!("{field}: ")), "{planner}: {e}");
     }
+}
+
+/// A step too small for `f32` (which `dodgy_2d` computes in, and whose step must be positive)
+/// panics nothing: the robots' first commands are finite.
+#[test]
+fn orca_takes_a_step_below_f32s_range() {
+    let mut s = head_on(12.3, "2", r#""orca""#);
+    s.dt = 1e-50;
+    s.duration = 1e-45;
+    let sim = Simulation::new(&s).unwrap();
+    for r in sim.robots() {
+        assert!(r.last.command.v.is_finite() && r.last.command.omega.is_finite());
+    }
+}
+
+/// ORCA's run is the same bits in every build: `dodgy_2d`'s `f32` arithmetic is IEEE's, lane
+/// for lane, natively and in wasm, and the tracking takes its sines and arctangents from
+/// `src/maths.rs`. The bits are those of the native build.
+#[test]
+fn orca_gives_the_same_bits_in_every_build() {
+    let r = dvf::run(&circle(8, "2", r#""orca""#)).unwrap();
+    let bits: Vec<[u64; 3]> = r
+        .robots
+        .iter()
+        .map(|x| x.final_pose.map(f64::to_bits))
+        .collect();
+    let native: [[u64; 3]; 8] = [
+        [
+            13845165043210823999,
+            13804164843229805120,
+            4614256656552045828,
+        ],
+        [
+            13842969320401197542,
+            13842994760573616376,
+            13835860133968814566,
+        ],
+        [
+            4583010704117815734,
+            13845167116565047646,
+            13833125093779451180,
+        ],
+        [
+            4619642530336471389,
+            13842963689916694510,
+            13828621494152080684,
+        ],
+        [
+            4621794123742222798,
+            4582106844292853641,
+            13160153362312160354,
+        ],
+        [
+            4619613021837197469,
+            4619603334287647728,
+            4605249457297304876,
+        ],
+        [
+            13804967950235590351,
+            4621793722354056120,
+            4609753056924675332,
+        ],
+        [
+            13842992578283991921,
+            4619598415165224406,
+            4612488097114038716,
+        ],
+    ];
+    assert_eq!(bits, native);
+    assert!(r.robots.iter().all(|x| x.converged_at.is_some()));
 }
