@@ -24,7 +24,19 @@ fn main() {
         eprintln!("{e}");
         std::process::exit(2)
     };
-    println!("### The paper's examples\n");
+    // Every planner runs with the shared safety barrier at its default rate: say so, and what
+    // each avoids on its own, above the tables.
+    println!(
+        "Every planner runs on the same unicycles, sensing, limits and shared safety barrier \
+         (barrier_rate = {} 1/s). What each avoids on its own:\n",
+        dvf::params::DEFAULT_BARRIER_RATE
+    );
+    for spec in &planners {
+        if let Ok(e) = dvf::planner::entry(&spec.name) {
+            println!("- `{}`: {}", e.name, e.avoids);
+        }
+    }
+    println!("\n### The paper's examples\n");
     print!(
         "{}",
         examples_table(&planners, now_ms).unwrap_or_else(|e| fail(e))

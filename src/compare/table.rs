@@ -22,21 +22,27 @@ fn cell(v: Option<f64>, digits: usize) -> String {
     v.map_or_else(|| "—".to_owned(), |v| format!("{v:.digits$}"))
 }
 
-/// The header and the rows of one comparison's run metrics: one row per planner, the first
-/// column `label` (the scenario's name, say).
+/// The header (when `header`) and the rows of one comparison's run metrics: one row per
+/// planner, with a first column `label` (the scene's name, say) when there is one.
 #[must_use]
-pub fn run_rows(label: &str, c: &Comparison, header: bool) -> String {
+pub fn run_rows(label: Option<&str>, c: &Comparison, header: bool) -> String {
     let mut out = String::new();
+    let (scene, rule) = if label.is_some() {
+        ("| scene ", "|---")
+    } else {
+        ("", "")
+    };
     if header {
-        out.push_str(
-            "| scene | planner | arrived | last arrival (s) | path (m) | effort ∫(v²+ω²)dt | peak curvature (1/m) | reversals | chattering | closest pair (m) | closest clearance (m) | violations | ms/step |\n\
-             |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
-        );
+        out.push_str(&format!(
+            "{scene}| planner | arrived | last arrival (s) | path (m) | effort ∫(v²+ω²)dt | peak curvature (1/m) | reversals | chattering | closest pair (m) | closest clearance (m) | violations | ms/step |\n\
+             {rule}|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        ));
     }
+    let first = label.map_or_else(String::new, |l| format!("| {l} "));
     for p in &c.planners {
         let m = &p.metrics;
         out.push_str(&format!(
-            "| {label} | {} | {}/{} | {} | {:.1} | {:.1} | {:.2} | {} | {} | {} | {} | {} | {:.3} |\n",
+            "{first}| {} | {}/{} | {} | {:.1} | {:.1} | {:.2} | {} | {} | {} | {} | {} | {:.3} |\n",
             p.planner.name,
             m.arrived,
             p.robots.len(),
@@ -64,7 +70,7 @@ pub fn examples_table(planners: &[Spec], mut clock: impl FnMut() -> f64) -> Resu
     let mut out = String::new();
     for (k, name) in EXAMPLES.iter().enumerate() {
         let c = compare_with(&preset(name)?, planners, &mut clock)?;
-        out.push_str(&run_rows(name, &c, k == 0));
+        out.push_str(&run_rows(Some(name), &c, k == 0));
     }
     Ok(out)
 }

@@ -400,34 +400,6 @@ impl Playground {
     }
 }
 
-/// One entry of [`planners`].
-#[derive(Serialize)]
-struct PlannerInfo {
-    name: &'static str,
-    title: &'static str,
-    source: &'static str,
-    avoids: &'static str,
-}
-
-/// Every planner a scenario's `planner` may name ([`crate::planner::PLANNERS`]) as
-/// `[{name, title, source, avoids}]`, in the order the menus list them (`dvf` first).
-///
-/// # Errors
-/// Only if the JS engine refuses to build the array.
-#[wasm_bindgen]
-pub fn planners() -> Result<JsValue, JsError> {
-    let list: Vec<PlannerInfo> = crate::planner::PLANNERS
-        .iter()
-        .map(|e| PlannerInfo {
-            name: e.name,
-            title: e.title,
-            source: e.source,
-            avoids: e.avoids,
-        })
-        .collect();
-    to_js(&list)
-}
-
 /// Rust-only helpers.
 impl Playground {
     /// The model behind the facade (for the facade's tests).

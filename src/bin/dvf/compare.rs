@@ -47,7 +47,7 @@ pub fn run(out: &mut impl Write, args: &CompareArgs) -> Result<(), String> {
         if c.barrier { "on" } else { "off" },
     )
     .map_err(|e| e.to_string())?;
-    write!(out, "{}", run_rows(&comparison.scenario, &comparison, true)).map_err(|e| e.to_string())
+    write!(out, "{}", run_rows(None, &comparison, true)).map_err(|e| e.to_string())
 }
 
 /// `s` with each `NAME=VALUE` of `set`: a parameter of the table (`params.NAME`), `dt` or
