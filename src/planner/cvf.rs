@@ -140,8 +140,8 @@ impl Radii {
         Self([g.k1 * g.rho, g.k2 * g.rho, g.k3 * g.rho])
     }
 
-    /// The band `r` lies in past `r₁`, as `(s, width)`: `s ∈ [0, 1]` its fraction across the
-    /// band of `width`, and whether it is the outer band; `None` inside `r₁` or outside `r₃`.
+    /// The band `r` lies in past `r₁`, as `(s, width, outer)`: `s ∈ [0, 1]` its fraction across
+    /// the band of `width`, and whether it is the outer band; `None` inside `r₁` or outside `r₃`.
     fn band(self, r: f64) -> Option<(f64, f64, bool)> {
         let [r1, r2, r3] = self.0;
         if r <= r1 || r > r3 {
@@ -227,8 +227,9 @@ pub(super) fn command(g: &Gains, pose: Pose, goal: Pose) -> (Command, DVec2) {
         let k0 = (1.0 / g.rho - k * crate::maths::sin(beta).abs()) / error.abs() * v;
         let kw = g.kw_max.min(k0);
         let omega0 = if error == 0.0 { feed } else { -kw * error + feed };
+        // `max` and `min` rather than `clamp`, which would panic on a NaN bound.
         let most = v / g.rho;
-        omega0.clamp(-most, most)
+        omega0.max(-most).min(most)
     } else {
         0.0
     };
