@@ -61,15 +61,50 @@ pub fn run_rows(label: Option<&str>, c: &Comparison, header: bool) -> String {
     out
 }
 
-/// The paper's examples ([`EXAMPLES`]) run with each of `planners`: one Markdown table, a row
-/// per example and planner, with the compute time read from `clock` (ms).
+/// The simulated time of each example in [`examples_table`] (s): at least this long, so that a
+/// planner slower than DVF has the time to arrive, and its last arrival says how long it took.
+pub const EXAMPLE_DURATION: f64 = 120.0;
+
+/// The planners of the book's table, with the gains that fit the scenes' robot where a
+/// source's defaults describe its own robot: `clf` and `clf-cbf` without the GRITSbot's wheel
+/// and speed limits (0.16 and 0.2 m/s: the scene's `v_max`, when set, limits them instead),
+/// `avf` and `cvf` stopping within 3 cm of the goal rather than the source's ρ/10 = 10 cm (the
+/// scenes count a robot arrived within `tol_position` = 5 cm), `move-to-pose` stopping within
+/// 1e-6 m rather than 1 mm (at 1 mm its heading is still some 0.1 rad off, beyond
+/// `tol_heading`). Every other gain is its source's.
+#[must_use]
+pub fn book_planners() -> Vec<Spec> {
+    let gains = |name: &str, json: &str| Spec {
+        name: name.to_owned(),
+        gains: serde_json::from_str(json).unwrap_or_default(),
+    };
+    crate::planner::PLANNERS
+        .iter()
+        .map(|e| match e.name {
+            "clf" => gains(e.name, r#"{"wheel_velocity_limit": null}"#),
+            "clf-cbf" => gains(
+                e.name,
+                r#"{"wheel_velocity_limit": null, "velocity_magnitude_limit": null}"#,
+            ),
+            "avf" | "cvf" => gains(e.name, r#"{"stop_within": 0.03}"#),
+            "move-to-pose" => gains(e.name, r#"{"stop_distance": 1e-6}"#),
+            _ => Spec::named(e.name),
+        })
+        .collect()
+}
+
+/// The paper's examples ([`EXAMPLES`]), each run for at least [`EXAMPLE_DURATION`], with each
+/// of `planners`: one Markdown table, a row per example and planner, with the compute time
+/// read from `clock` (ms).
 ///
 /// # Errors
 /// As [`compare_with`].
 pub fn examples_table(planners: &[Spec], mut clock: impl FnMut() -> f64) -> Result<String, Error> {
     let mut out = String::new();
     for (k, name) in EXAMPLES.iter().enumerate() {
-        let c = compare_with(&preset(name)?, planners, &mut clock)?;
+        let mut s = preset(name)?;
+        s.duration = s.duration.max(EXAMPLE_DURATION);
+        let c = compare_with(&s, planners, &mut clock)?;
         out.push_str(&run_rows(Some(name), &c, k == 0));
     }
     Ok(out)
