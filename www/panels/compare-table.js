@@ -50,10 +50,11 @@ export function compareTable(comparison, colour) {
   head.append(el('th', ''));
   runs.forEach((r, i) => {
     const name = nameOf(r.planner);
-    const th = el('th', name);
+    const th = el('th');
+    th.append(el('span', name, 'compare-name'));
     th.dataset.planner = name;
     th.title = r.title;
-    if (i === 0) th.append(el('span', ' (live)', 'compare-live'));
+    if (i === 0) th.append(el('span', '(live)', 'compare-live'));
     else th.style.color = colour;
     head.append(th);
   });
