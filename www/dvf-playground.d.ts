@@ -193,6 +193,12 @@ export interface DvfPlaygroundAttributes {
    * its default gains), set on the scene that `preset` or `src` loads and when it changes.
    */
   planner?: string;
+  /**
+   * A second planner (`orca`, `avf`, …): the element opens in compare mode against it, its run
+   * drawn over the scene and both runs' metrics in one table (those of `dvf compare`); removed
+   * or empty: no comparison. An unknown name shows the core's message, naming `compare`.
+   */
+  compare?: string;
   /** Present: the full toolbar and side panels. */
   controls?: boolean;
   /** Present: drags and keys edit the scene without the full controls. */

@@ -52,6 +52,7 @@ export class DvfPlayground extends Base {
       'preset',
       'src',
       'planner',
+      'compare',
       'field',
       'theta0',
       'sensing',
@@ -152,6 +153,7 @@ export class DvfPlayground extends Base {
     if (name === 'preset' && value) this.#loadPreset(value) && this.#applyPlanner();
     else if (name === 'src' && value) c.loadUrl(value).then((ok) => ok && this.#applyPlanner());
     else if (name === 'planner' && value) c.compare.setPlanner(value);
+    else if (name === 'compare') c.compare.set(value);
     else if (name === 'time') this.#seekAttribute();
     else if (name === 'autoplay') this.#observeScreen();
     else this.#readDisplayAttributes();
@@ -212,6 +214,8 @@ export class DvfPlayground extends Base {
     const ok = src ? await c.loadUrl(src) : this.#loadPreset(this.getAttribute('preset') || c.defaultPreset);
     if (ok) {
       this.#applyPlanner();
+      // `compare`: the element opens in compare mode against that planner.
+      if (this.hasAttribute('compare')) c.compare.set(this.getAttribute('compare'));
       // `loaded` tells of the scene at its `time`; autoplay plays on from there.
       await this.#seekAttribute();
       this.#autoplay();

@@ -1,9 +1,12 @@
 // End-to-end tests of the playground's planner menu and compare mode: the release package,
 // served, in Chromium. The menu lists the planners and sets the scenario's `planner`, which
 // the link, the exported JSON and the element's `planner` attribute carry; the compare mode
-// draws a second planner's run over the scene and shows both runs' figures in one table, equal
-// to the command line's (tests/data/compare-example3-circle-swap.json, its `made_by` says how
-// it was written); a drag runs both again. Screenshots go to test-results/ (planners-*.png).
+// draws a second planner's run over the scene and shows both runs' metrics in one table, every
+// number but the compute per step equal to the command line's
+// (tests/data/compare-example3-circle-swap-orca.json, written by
+// `dvf compare --preset example3-circle-swap --planners dvf,orca --json` of the release build);
+// a drag runs both again; the element's `compare` attribute opens it in compare mode.
+// Screenshots go to test-results/ (planners-*.png).
 //
 // Run: make test-e2e   (or: node tests/e2e/planners.mjs after make build-wasm)
 
@@ -15,8 +18,10 @@ const PG = 'dvf-playground';
 const DESKTOP = { width: 1280, height: 800 };
 const PHONE = { width: 390, height: 844 };
 const SCENE = 'example3-circle-swap';
-/** `dvf simulate`'s reports of SCENE with dvf and dvf-paper, and their path lengths. */
-const REFERENCE = JSON.parse(readFileSync(join(ROOT, 'tests', 'data', `compare-${SCENE}.json`), 'utf8'));
+/** The planner compared with dvf, SCENE's own. */
+const OTHER = 'orca';
+/** `dvf compare --json` of SCENE with dvf and OTHER. */
+const REFERENCE = JSON.parse(readFileSync(join(ROOT, 'tests', 'data', `compare-${SCENE}-${OTHER}.json`), 'utf8'));
 
 const part = (page, id, sel = PG) => page.locator(`${sel} [data-id="${id}"]`);
 
@@ -32,8 +37,8 @@ async function openMain(newPage, fragment, viewport = DESKTOP) {
 const predicted = (page) => page.evaluate((s) => Array.from(document.querySelector(s).cache.predicted), PG);
 
 /** The compare table's cells as {planner: {metric: value}} (null for none), once it is ready. */
-async function tableValues(page) {
-  await page.waitForSelector(`${PG} [data-id="compare-results"][data-ready]`);
+async function tableValues(page, sel = PG) {
+  await page.waitForSelector(`${sel} [data-id="compare-results"][data-ready]`);
   return page.evaluate((s) => {
     const out = {};
     for (const td of document.querySelector(s).shadowRoot.querySelectorAll('[data-id="compare-table"] td')) {
@@ -41,20 +46,24 @@ async function tableValues(page) {
       out[td.dataset.planner][td.dataset.metric] = td.dataset.value === '' ? null : Number(td.dataset.value);
     }
     return out;
-  }, PG);
+  }, sel);
 }
 
-/** The figures of a reference run, as the table names them (see www/panels/compare-table.js). */
-function expected({ report, path_length }) {
-  const arrived = report.robots.filter((r) => r.converged_at != null);
-  return {
-    arrivals: arrived.length,
-    last_arrival: arrived.length === report.robots.length ? Math.max(...arrived.map((r) => r.converged_at)) : null,
-    path_length,
-    min_pair: report.min_pair_distance,
-    min_clearance: report.min_obstacle_clearance,
-    violations: report.violations,
-  };
+/**
+ * Whether the table's `values` hold every metric of the reference's runs, each the same
+ * number (`data-value` is the shortest decimal of the f64, which parses back to it exactly),
+ * but the compute per step, which is measured in the browser: there, a positive number.
+ * Returns what differs, empty when nothing does.
+ */
+function differences(values) {
+  const out = [];
+  for (const run of REFERENCE.planners) {
+    const got = values[run.planner] ?? {};
+    for (const [k, v] of Object.entries(run.metrics)) {
+      if (k === 'ms_per_step' ? !(got[k] > 0) : got[k] !== v) out.push(`${run.planner} ${k}: ${got[k]} (CLI ${v})`);
+    }
+  }
+  return out;
 }
 
 async function section(what, body) {
@@ -140,11 +149,63 @@ await run(async ({ base, newPage }) => {
     await page.context().close();
   });
 
+  // ---- The element's `compare` attribute: it opens in compare mode, with the CLI's numbers.
+  await section('compare attribute', async () => {
+    const page = await newPage({ viewport: DESKTOP });
+    await page.goto(`${base}/embed.html`);
+    await page.evaluate(
+      ([scene, other]) => {
+        document.body.insertAdjacentHTML(
+          'beforeend',
+          `<dvf-playground id="c" preset="${scene}" planner="dvf" compare="${other}" controls></dvf-playground>` +
+            `<dvf-playground id="d" preset="${scene}" compare="rrt" controls></dvf-playground>`,
+        );
+      },
+      [SCENE, OTHER],
+    );
+    await waitLoaded(page, '#c');
+    await waitLoaded(page, '#d');
+    const values = await tableValues(page, '#c');
+    const state = await page.evaluate(() => document.querySelector('#c').viewState().compare);
+    const diff = differences(values);
+    check(
+      state === OTHER && diff.length === 0,
+      `compare="${OTHER}" opens the element in compare mode, its table the CLI's numbers (${diff.join('; ')})`,
+    );
+    const d = await page.evaluate(() => {
+      const el = document.querySelector('#d');
+      return {
+        compare: el.viewState().compare,
+        message: el.shadowRoot.querySelector('[data-id="message-text"]').textContent,
+        hidden: el.shadowRoot.querySelector('[data-id="compare-results"]').hidden,
+      };
+    });
+    check(
+      d.compare === null &&
+        d.hidden &&
+        d.message.startsWith('compare: unknown planner "rrt"') &&
+        d.message.includes('move-to-pose'),
+      `an unknown compare attribute shows the core's message and compares nothing (${d.message})`,
+    );
+    await page.evaluate(() => document.querySelector('#d').setAttribute('compare', 'avf'));
+    await tableValues(page, '#d');
+    const avf = await page.evaluate(() => document.querySelector('#d').viewState().compare);
+    await page.evaluate(() => document.querySelector('#d').removeAttribute('compare'));
+    const off = await page.evaluate(() => {
+      const el = document.querySelector('#d');
+      return el.viewState().compare === null && el.shadowRoot.querySelector('[data-id="compare-results"]').hidden;
+    });
+    check(avf === 'avf' && off, 'setting the attribute compares with that planner; removing it ends the comparison');
+    await page.screenshot({ path: join(RESULTS, 'planners-compare-attribute.png'), fullPage: true });
+    checkQuiet(page, 'compare attribute');
+    await page.context().close();
+  });
+
   // ---- Compare mode: two runs drawn, one table equal to the command line's, a drag runs both.
   await section('compare', async () => {
     const page = await openMain(newPage, `${base}/#${SCENE}`);
     const plain = await lib.canvasStats(page);
-    await part(page, 'compare').selectOption('dvf-paper');
+    await part(page, 'compare').selectOption(OTHER);
     const values = await tableValues(page);
     await frames(page);
     const drawn = lib.changedFraction(plain, await lib.canvasStats(page));
@@ -153,32 +214,28 @@ await run(async ({ base, newPage }) => {
       drawn > 0.002 &&
         (await part(page, 'compare-legend').isVisible()) &&
         /dvf: live/.test(legend) &&
-        /dvf-paper/.test(legend),
+        legend.includes(OTHER),
       `compare mode draws the second run (${(drawn * 100).toFixed(1)} % of blocks) and the legend names both (${legend})`,
     );
-    for (const ref of REFERENCE.runs) {
-      const want = expected(ref);
-      const got = values[ref.planner] ?? {};
-      // The same sums in the same order as the reference's: the path length to 1e-12 relative
-      // (the reference parsed back from the CSV's shortest decimals is the same f64).
-      const same = Object.entries(want).every(([k, v]) =>
-        k === 'path_length' ? Math.abs(got[k] - v) <= 1e-12 * v : got[k] === v,
-      );
-      check(same, `the table's ${ref.planner} column equals dvf simulate's (${JSON.stringify(got)})`);
-    }
-    const exact = await page.evaluate(
-      (s) => document.querySelector(s).shadowRoot.querySelector('td[data-metric="path_length"]').textContent,
+    const diff = differences(values);
+    check(
+      diff.length === 0,
+      `the table holds every metric of dvf compare --json, the same numbers but the compute per step (${diff.join('; ')})`,
+    );
+    const approximate = await page.evaluate(
+      (s) =>
+        [...document.querySelector(s).shadowRoot.querySelectorAll('td')].some((td) => td.textContent.startsWith('≈')),
       PG,
     );
-    check(!exact.startsWith('≈'), `a run kept at every step shows its path length as it is (${exact})`);
+    check(!approximate, 'no figure of the table is marked approximate');
     await page.screenshot({ path: join(RESULTS, 'planners-compare-desktop.png') });
     const [svg] = await Promise.all([page.waitForEvent('download'), part(page, 'export-svg').click()]);
     const svgText = readFileSync(await svg.path(), 'utf8');
     check(/#ea580c/i.test(svgText), 'the SVG export draws the compared run too');
 
     const state = await page.evaluate((s) => document.querySelector(s).viewState().compare, PG);
-    await page.waitForFunction(() => location.hash.includes('&compare=dvf-paper'));
-    check(state === 'dvf-paper', 'viewState() and the link name the compared planner');
+    await page.waitForFunction((o) => location.hash.includes(`&compare=${o}`), OTHER);
+    check(state === OTHER, 'viewState() and the link name the compared planner');
     const link = page.url();
 
     // Robot 1's start dragged: both runs again.
@@ -192,15 +249,15 @@ await run(async ({ base, newPage }) => {
     );
     await lib.drag(page, at, 10, [0, 6]);
     await page.waitForFunction(
-      ([s, old]) => {
+      ([s, old, o]) => {
         const td = document
           .querySelector(s)
           .shadowRoot.querySelector(
-            '[data-id="compare-results"][data-ready] td[data-metric="path_length"][data-planner="dvf-paper"]',
+            `[data-id="compare-results"][data-ready] td[data-metric="path_length"][data-planner="${o}"]`,
           );
         return td && Number(td.dataset.value) !== old;
       },
-      [PG, values['dvf-paper'].path_length],
+      [PG, values[OTHER].path_length, OTHER],
     );
     check(true, 'a dragged robot runs both planners again (the compared path length changes)');
     checkQuiet(page, 'compare');
@@ -208,26 +265,12 @@ await run(async ({ base, newPage }) => {
 
     const again = await openMain(newPage, link);
     await tableValues(again);
-    check((await part(again, 'compare').inputValue()) === 'dvf-paper', 'the link opens the compare mode');
+    check((await part(again, 'compare').inputValue()) === OTHER, 'the link opens the compare mode');
     await part(again, 'compare').selectOption('');
     await frames(again);
     check(await part(again, 'compare-results').isHidden(), 'compare off hides the table and the legend');
     checkQuiet(again, 'compare link');
     await again.context().close();
-
-    // A run of more steps than the samples it keeps (src/wasm/run.rs): its path length is marked.
-    const long = await openMain(newPage, `${base}/#table2-obstacles&compare=dvf-paper`);
-    await tableValues(long);
-    const cell = (page) =>
-      page.evaluate(
-        (s) =>
-          document.querySelector(s).shadowRoot.querySelector('td[data-metric="path_length"][data-planner="dvf-paper"]')
-            .textContent,
-        PG,
-      );
-    check((await cell(long)).startsWith('≈ '), `a sampled path length is marked approximate (${await cell(long)})`);
-    checkQuiet(long, 'long run');
-    await long.context().close();
 
     const crowd = await openMain(newPage, `${base}/#crowd-200&compare=dvf-paper`);
     const note = await part(crowd, 'compare-results').textContent();
@@ -238,7 +281,10 @@ await run(async ({ base, newPage }) => {
     checkQuiet(crowd, 'crowd');
     await crowd.context().close();
 
-    const phone = await openMain(newPage, `${base}/#${SCENE}&compare=dvf-paper`, PHONE);
+    // The longest planner names, in both columns.
+    const phone = await openMain(newPage, `${base}/#${SCENE}&compare=move-to-pose`, PHONE);
+    await part(phone, 'planner').selectOption('clf-cbf');
+    await phone.waitForSelector(`${PG} [data-id="compare-results"][data-ready] th[data-planner="clf-cbf"]`);
     await tableValues(phone);
     await frames(phone);
     await phone.screenshot({ path: join(RESULTS, 'planners-compare-phone.png'), fullPage: true });

@@ -5,7 +5,9 @@
 // limits and barrier: only `planner` differs). The canvas draws the second run overlaid, its
 // paths faded and its robots at the clock's time as outlined discs in COMPARE_COLOUR; a legend over the canvas says
 // which is which; the results panel shows both runs' figures in one table
-// (panels/compare-table.js). Every edit (a drag included) runs both again: one run at a time,
+// (panels/compare-table.js), which the worker computes with the module's `compare()`: the
+// numbers of `dvf compare --json` for the same scene, the compute per step measured in this
+// browser. Every edit (a drag included) runs both again: one run at a time,
 // the newest scene next. Scenes above GHOST_MAX_ROBOTS robots are not compared (their paths
 // would hide the scene).
 
@@ -13,6 +15,7 @@ import { compareTable } from '../panels/compare-table.js';
 import { el } from '../panels/dom.js';
 import { GHOST_MAX_ROBOTS } from './ghost.js';
 import { messageOf } from './message.js';
+import { compare } from '../pkg/dvf.js';
 import { runWorker } from './wasm-views.js';
 
 /** The compared run's colour on the canvas, in the legend and in the table's head. */
@@ -31,43 +34,20 @@ export function plannerName(planner) {
 }
 
 /**
- * One run of the comparison: its planner, report, trajectories and the figures of the table.
+ * The compared planner's run as the canvas draws it: its trajectories (the table's figures
+ * come from the module's `compare()`, not from these samples).
  */
 export class ComparedRun {
   /**
    * @param {string} planner
-   * @param {any} report the run's report (the JSON of dvf simulate)
    * @param {Float64Array} trajectories `[robots · samples · 6]` (src/wasm/run.rs)
    * @param {number} samples per robot
    */
-  constructor(planner, report, trajectories, samples) {
+  constructor(planner, trajectories, samples) {
     this.planner = planner;
-    this.report = report;
     this.trajectories = trajectories;
     this.samples = samples;
-    this.robots = report.robots.length;
-    const arrived = report.robots.filter((r) => r.converged_at != null);
-    /** Robots at their goal position and heading at the end (the report's `converged_at`). */
-    this.arrivals = arrived.length;
-    /** When the last robot arrived (s); null when one did not. */
-    this.lastArrival = arrived.length === this.robots ? Math.max(0, ...arrived.map((r) => r.converged_at)) : null;
-    /**
-     * The robots' paths (m), summed: each robot's |v| held over each interval between two
-     * samples (every step of a run of up to 2,000 steps, src/wasm/run.rs MAX_SAMPLES_PER_ROBOT).
-     */
-    this.pathLength = 0;
-    /** The run kept every step: the path length is exact, else a sum over every few steps. */
-    this.everyStep = samples - 1 >= report.steps;
-    for (let i = 0; i < this.robots; i++) {
-      for (let k = 0; k + 1 < samples; k++) {
-        const o = (i * samples + k) * SAMPLE;
-        const dt = trajectories[o + SAMPLE] - trajectories[o];
-        this.pathLength += Math.abs(trajectories[o + 4]) * dt;
-      }
-    }
-    this.minPair = report.min_pair_distance;
-    this.minClearance = report.min_obstacle_clearance;
-    this.violations = report.violations;
+    this.robots = samples > 0 ? trajectories.length / (samples * SAMPLE) : 0;
   }
 
   /** The sample at or before time `t` (s): samples are evenly spaced from t = 0. */
@@ -83,7 +63,7 @@ export class ComparedRun {
  * What the compare mode uses of the controller: its parts by `data-id`, the scenario, its
  * gestures and edits, the clock's time, the message and redraws.
  * @typedef {Pick<import('./controller.js').Controller, '$' | 'edit' | 'gestures' | 'model'
- *   | 'pg' | 'requestDraw' | 'scenario' | 'viewChanged' | 'views'>} CompareHost
+ *   | 'pg' | 'requestDraw' | 'scenario' | 'showMessage' | 'viewChanged' | 'views'>} CompareHost
  */
 
 export class CompareMode {
@@ -94,7 +74,11 @@ export class CompareMode {
     this.list = [];
     /** @type {string | null} the second planner, or null: no comparison */
     this.planner = null;
-    /** @type {[ComparedRun, ComparedRun] | null} the scenario's run and the second planner's */
+    /**
+     * The comparison shown: the module's `compare()` of the scene with both planners (the JSON
+     * of `dvf compare --json`) and the second planner's run to draw; null while none is.
+     * @type {{ comparison: any, ghost: ComparedRun } | null}
+     */
     this.runs = null;
     /** @type {Worker | null} */
     this.worker = null;
@@ -141,15 +125,36 @@ export class CompareMode {
     return c.gestures.change('planner', () => c.edit({ ...c.model, planner: name }));
   }
 
-  /** Compares the scene with planner `name` (null: no comparison); an unknown name is none. */
+  /**
+   * Compares the scene with planner `name` (null or empty: no comparison). An unknown name
+   * shows the core's message, naming `compare`, keeps the mode as it is and returns false.
+   */
   set(name) {
-    const planner = name && this.known(name) ? name : null;
-    if (planner === this.planner) return;
+    const planner = name || null;
+    if (planner && !this.known(planner)) {
+      this.c.showMessage(this.#unknown(planner));
+      return false;
+    }
+    if (planner === this.planner) return true;
     this.planner = planner;
     this.runs = null;
     this.key = '';
     this.stale();
     this.c.viewChanged();
+    return true;
+  }
+
+  /**
+   * The core's message for a planner name it does not know: the module's `compare()` refuses
+   * the name before it runs anything, naming it `planners[0]`, which here is `compare`.
+   */
+  #unknown(name) {
+    try {
+      compare(this.c.scenario(), [name]);
+    } catch (e) {
+      return messageOf(e).replace(/^planners\[0\]/, 'compare');
+    }
+    return `compare: unknown planner "${name}"`;
   }
 
   /** The scene changed (or the second planner): the menus show it, and both runs are made anew. */
@@ -183,30 +188,38 @@ export class CompareMode {
     this.#start();
   }
 
-  /** Runs the scene with both planners in the worker, then shows them (and again if it changed). */
+  /**
+   * Runs the scene in the worker twice: the comparison of both planners (the table), and the
+   * second planner's run with its trajectories (the canvas); then shows them (and again if the
+   * scene changed meanwhile).
+   */
   #start() {
     const c = this.c;
     const s = c.scenario();
-    const planners = [plannerName(s.planner), /** @type {string} */ (this.planner)];
+    // The scenario's own planner keeps its gains; the second runs with its defaults.
+    const own = s.planner ?? 'dvf';
+    const second = /** @type {string} */ (this.planner);
     const id = ++this.id;
     this.busy = true;
     this.dirty = false;
     this.note = null;
     this.worker ??= runWorker();
-    /** @type {ComparedRun[]} */
-    const runs = [];
+    /** @type {any} */
+    let comparison = null;
+    /** @type {ComparedRun | null} */
+    let ghost = null;
     this.worker.onmessage = (e) => {
-      if (e.data.id !== id) return;
+      if (e.data.id !== id || id !== this.id || !this.busy) return;
       if (e.data.error) {
-        this.#done(id, null, `Could not run the scene with ${planners[runs.length]}: ${messageOf(e.data)}`);
+        this.#done(id, null, `Could not compare ${plannerName(own)} with ${second}: ${messageOf(e.data)}`);
         return;
       }
-      runs.push(new ComparedRun(planners[runs.length], e.data.report, e.data.trajectories, e.data.samples));
-      if (runs.length === 2) this.#done(id, /** @type {[ComparedRun, ComparedRun]} */ (runs), null);
+      if (e.data.comparison) comparison = e.data.comparison;
+      else ghost = new ComparedRun(second, e.data.trajectories, e.data.samples);
+      if (comparison && ghost) this.#done(id, { comparison, ghost }, null);
     };
-    // The scenario's own planner keeps its gains; the second runs with its defaults.
-    this.worker.postMessage({ id, scenario: s, trajectories: true });
-    this.worker.postMessage({ id, scenario: { ...s, planner: planners[1] }, trajectories: true });
+    this.worker.postMessage({ id, scenario: s, compare: [own, second] });
+    this.worker.postMessage({ id, scenario: { ...s, planner: second }, trajectories: true });
     if (!this.runs) this.show();
   }
 
@@ -235,14 +248,14 @@ export class CompareMode {
     if (this.note) box.replaceChildren(el('p', this.note, 'muted'));
     else if (!this.runs) box.replaceChildren(el('p', `Running the scene with ${own} and ${this.planner}…`, 'muted'));
     else {
-      box.replaceChildren(...compareTable(this.runs, c.model, COMPARE_COLOUR, this.list));
+      box.replaceChildren(...compareTable(this.runs.comparison, COMPARE_COLOUR));
       box.dataset.ready = '';
     }
   }
 
   /** Draws the second planner's run on `ctx` through `view`: its paths, and its robots at time `t`. */
   draw(ctx, view, t) {
-    const run = this.runs?.[1];
+    const run = this.runs?.ghost;
     if (!this.planner || !run || run.planner !== this.planner) return;
     const tr = run.trajectories;
     const n = run.samples;

@@ -4,10 +4,12 @@
 // ghost.js), and for a run with violations where they happened (violations.js: `marks`).
 // Messages in: first {wasm}, where the page loads the module from (its URL or its bytes:
 // wasm-views.js, runWorker), then {id, scenario, trajectories?}; out:
-// {id, report, marks, trajectories?, samples?} or {id, error}. The module is loaded on the
-// first run only.
+// {id, report, marks, trajectories?, samples?} or {id, error}. With `compare` (a list of
+// planners, names or objects with their gains) it runs the scene with each instead, through
+// the module's `compare()` (the JSON of `dvf compare --json`, compare.js's table): out
+// {id, comparison} or {id, error}. The module is loaded on the first run only.
 
-import init, { Run } from '../pkg/dvf.js';
+import init, { compare, Run } from '../pkg/dvf.js';
 import { findViolations } from './violations.js';
 
 /** Where the module comes from (the first message), and the module once a run asks for it. */
@@ -25,6 +27,10 @@ self.onmessage = async (e) => {
     if (source === null) throw new Error('no wasm module was given to the worker');
     ready ??= init({ module_or_path: source });
     await ready;
+    if (e.data.compare) {
+      self.postMessage({ id, comparison: compare(scenario, e.data.compare) });
+      return;
+    }
     const run = new Run(scenario);
     try {
       if (e.data.trajectories) {
