@@ -107,7 +107,7 @@ fn compare_prints_a_row_per_planner() {
     ]);
     assert!(out.starts_with("two: 2 robots, 0 obstacles, 10 s in steps of 0.01 s, v_max 2, ω_max none, safety barrier on"), "{out}");
     assert!(
-        out.contains("| path (m) |") && out.contains("| ms/step |"),
+        out.contains("| path (m) |") && out.contains("| µs/step |"),
         "{out}"
     );
     let rows: Vec<&str> = out.lines().skip(4).collect();

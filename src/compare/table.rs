@@ -34,7 +34,7 @@ pub fn run_rows(label: Option<&str>, c: &Comparison, header: bool) -> String {
     };
     if header {
         out.push_str(&format!(
-            "{scene}| planner | arrived | last arrival (s) | path (m) | effort ∫(v²+ω²)dt | peak curvature (1/m) | reversals | chattering | closest pair (m) | closest clearance (m) | violations | ms/step |\n\
+            "{scene}| planner | arrived | last arrival (s) | path (m) | effort ∫(v²+ω²)dt | peak curvature (1/m) | reversals | chattering | closest pair (m) | closest clearance (m) | violations | µs/step |\n\
              {rule}|---|---|---|---|---|---|---|---|---|---|---|---|\n",
         ));
     }
@@ -42,7 +42,7 @@ pub fn run_rows(label: Option<&str>, c: &Comparison, header: bool) -> String {
     for p in &c.planners {
         let m = &p.metrics;
         out.push_str(&format!(
-            "{first}| {} | {}/{} | {} | {:.1} | {:.1} | {:.2} | {} | {} | {} | {} | {} | {:.3} |\n",
+            "{first}| {} | {}/{} | {} | {:.1} | {:.1} | {:.2} | {} | {} | {} | {} | {} | {:.2} |\n",
             p.planner.name,
             m.arrived,
             p.robots.len(),
@@ -55,7 +55,7 @@ pub fn run_rows(label: Option<&str>, c: &Comparison, header: bool) -> String {
             cell(m.min_pair_distance, 3),
             cell(m.min_obstacle_clearance, 3),
             m.violations,
-            m.ms_per_step,
+            1e3 * m.ms_per_step,
         ));
     }
     out
