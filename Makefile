@@ -127,7 +127,7 @@ test: tools lint test-native test-node test-browser test-e2e test-python
 # 50 scenes of each sweep family, with and without limits, for every planner, as Markdown on
 # standard output (examples/compare.rs). Slow, and not part of `make test`.
 compare-table:
-	cargo run --release --example compare
+	cargo run --release --example compare -- 25
 
 # The README's picture (docs/playground.png), from the release build: a separate target, so that
 # `make test` leaves the tree as it found it.
