@@ -192,19 +192,13 @@ mod tests {
     use crate::testing::{assert_close, test};
     use serde_json::json;
 
-    fn pose(x: f64, y: f64, theta: f64) -> Pose {
-        Pose {
-            p: DVec2::new(x, y),
-            theta,
-        }
-    }
 
     /// The source's scene (the masks of `Unicycle_AVF.slx`): start (8.592…, 12.677) at
     /// 5.010 rad, goal (−8, 0) at 3π/2.
     fn source_scene() -> (Pose, Pose) {
         (
-            pose(8.592_294_692_468_84, 12.676_570_671_638_1, 5.009_813_579_478_41),
-            pose(-8.0, 9.797_174_393_178_83e-16, 4.712_388_980_384_69),
+            Pose::new(8.592_294_692_468_84, 12.676_570_671_638_1, 5.009_813_579_478_41),
+            Pose::new(-8.0, 9.797_174_393_178_83e-16, 4.712_388_980_384_69),
         )
     }
 
@@ -223,21 +217,21 @@ mod tests {
             // (pose, goal, v, ω, ∠F in the world frame)
             (start, goal, 3.0, -2.403_643_709_628_822, 2.875_602_834_273_417_7),
             (
-                pose(2.0, 1.0, 0.3),
+                Pose::new(2.0, 1.0, 0.3),
                 Pose::default(),
                 2.932_236_706_751_336,
                 0.200_014_287_681_819_6,
                 0.927_295_218_001_612_3,
             ),
             (
-                pose(1.0, 2.0, -2.0),
-                pose(0.5, -1.0, 1.0),
+                Pose::new(1.0, 2.0, -2.0),
+                Pose::new(0.5, -1.0, 1.0),
                 2.986_339_984_986_982_3,
                 -1.959_342_509_667_381_3,
                 1.811_295_298_760_539_5,
             ),
             (
-                pose(-3.0, -1.0, 2.9),
+                Pose::new(-3.0, -1.0, 2.9),
                 Pose::default(),
                 2.989_268_651_028_787_4,
                 -3.266_098_163_896_105,
@@ -309,19 +303,19 @@ mod tests {
     /// (`stop_within = 0`) it stops at the goal position and turns to the goal heading: no NaN.
     #[test]
     fn near_the_goal_it_stops_or_turns_to_the_goal_heading() {
-        let stop = command(&Gains::default(), pose(1.09, 2.0, 0.5), pose(1.0, 2.0, 0.0));
+        let stop = command(&Gains::default(), Pose::new(1.09, 2.0, 0.5), Pose::new(1.0, 2.0, 0.0));
         assert_eq!(stop, (Command::default(), DVec2::ZERO));
-        let (c, _) = command(&Gains::default(), pose(1.11, 2.0, 0.5), pose(1.0, 2.0, 0.0));
+        let (c, _) = command(&Gains::default(), Pose::new(1.11, 2.0, 0.5), Pose::new(1.0, 2.0, 0.0));
         assert!(c.v > 0.3, "{c:?}");
         let g = Gains {
             stop_within: 0.0,
             ..Gains::default()
         };
-        let (c, f) = command(&g, pose(1.0, 2.0, 0.5), pose(1.0, 2.0, 0.0));
+        let (c, f) = command(&g, Pose::new(1.0, 2.0, 0.5), Pose::new(1.0, 2.0, 0.0));
         assert_eq!(c.v, 0.0);
         assert_close!(c.omega, -0.5, 1e-15);
         assert_eq!(f, DVec2::ZERO);
-        let (c, _) = command(&g, pose(1e-200, 0.0, 0.5), Pose::default());
+        let (c, _) = command(&g, Pose::new(1e-200, 0.0, 0.5), Pose::default());
         assert!(c.v.is_finite() && c.omega.is_finite(), "{c:?}");
     }
 
@@ -348,10 +342,10 @@ mod tests {
                 theta: rng.heading(),
             };
             let at = match i % 4 {
-                0 => pose(goal.p.x, goal.p.y, rng.heading()),
+                0 => Pose::new(goal.p.x, goal.p.y, rng.heading()),
                 _ => {
                     let p = goal.p + offset(&mut rng);
-                    pose(p.x, p.y, rng.heading())
+                    Pose::new(p.x, p.y, rng.heading())
                 }
             };
             let (c, f) = command(&g, at, goal);
@@ -361,10 +355,7 @@ mod tests {
     }
 
     fn refused(gains: serde_json::Value) -> String {
-        let serde_json::Value::Object(map) = gains else {
-            unreachable!()
-        };
-        (ENTRY.build)(&map).unwrap_err().to_string()
+        crate::planner::refused(&ENTRY, gains)
     }
 
     #[test]

@@ -162,12 +162,6 @@ mod tests {
     use crate::scenario::Scenario;
     use crate::testing::{assert_close, test};
 
-    fn pose(x: f64, y: f64, theta: f64) -> Pose {
-        Pose {
-            p: DVec2::new(x, y),
-            theta,
-        }
-    }
 
     /// The Robotarium's own numbers: `create_pose_controller_clf()` with its defaults, called
     /// on these five states and goals (robotarium_python_simulator at commit b23069e, numpy
@@ -178,11 +172,11 @@ mod tests {
     #[test]
     fn gives_the_robotariums_commands() {
         let cases = [
-            (pose(0.0, 0.0, 0.0), pose(1.0, 0.5, 0.7), (0.148_696_544_415_550_16, 0.215_303_915_894_282_58)),
-            (pose(0.5, -0.2, 2.0), pose(0.0, 0.3, -1.5), (0.148_929_812_226_237_4, -0.210_860_719_500_240_02)),
-            (pose(-0.3, 0.4, -1.0), pose(0.2, -0.1, 0.5), (0.154_609_742_083_714_34, -0.102_671_579_357_822_3)),
-            (pose(1.0, 1.0, 3.0), pose(1.05, 1.02, 3.1), (-0.020_090_444_839_683_51, -2.664_943_907_815_552_6)),
-            (pose(0.0, 0.0, 0.2), pose(0.0, 0.0, 0.0), (0.0, -0.734_709_171_154_325_3)),
+            (Pose::new(0.0, 0.0, 0.0), Pose::new(1.0, 0.5, 0.7), (0.148_696_544_415_550_16, 0.215_303_915_894_282_58)),
+            (Pose::new(0.5, -0.2, 2.0), Pose::new(0.0, 0.3, -1.5), (0.148_929_812_226_237_4, -0.210_860_719_500_240_02)),
+            (Pose::new(-0.3, 0.4, -1.0), Pose::new(0.2, -0.1, 0.5), (0.154_609_742_083_714_34, -0.102_671_579_357_822_3)),
+            (Pose::new(1.0, 1.0, 3.0), Pose::new(1.05, 1.02, 3.1), (-0.020_090_444_839_683_51, -2.664_943_907_815_552_6)),
+            (Pose::new(0.0, 0.0, 0.2), Pose::new(0.0, 0.0, 0.0), (0.0, -0.734_709_171_154_325_3)),
         ];
         let g = Gains::default();
         for (at, goal, (v, omega)) in cases {
@@ -200,7 +194,7 @@ mod tests {
             wheel_velocity_limit: None,
             ..Gains::default()
         };
-        let c = g.command(pose(-2.0, 0.0, 0.0), pose(0.0, 0.0, 0.0));
+        let c = g.command(Pose::new(-2.0, 0.0, 0.0), Pose::new(0.0, 0.0, 0.0));
         assert_eq!((c.v, c.omega), (2.0, 0.0));
     }
 
@@ -210,10 +204,10 @@ mod tests {
     #[test]
     fn holds_its_pose_at_round_off_distance() {
         let g = Gains::default();
-        let goal = pose(1.0, 0.7, 1.5);
-        let at = g.command(pose(1.0, 0.7, 1.2), goal);
+        let goal = Pose::new(1.0, 0.7, 1.5);
+        let at = g.command(Pose::new(1.0, 0.7, 1.2), goal);
         for off in [DVec2::new(1e-14, 0.0), DVec2::new(0.0, -1e-14)] {
-            let c = g.command(pose(1.0 + off.x, 0.7 + off.y, 1.2), goal);
+            let c = g.command(Pose::new(1.0 + off.x, 0.7 + off.y, 1.2), goal);
             assert_eq!((c.v, c.omega), (at.v, at.omega));
         }
         let a: f64 = 0.3;

@@ -356,12 +356,6 @@ mod tests {
     use crate::testing::{assert_close, test};
     use std::f64::consts::PI;
 
-    fn pose(x: f64, y: f64, theta: f64) -> Pose {
-        Pose {
-            p: DVec2::new(x, y),
-            theta,
-        }
-    }
 
     fn command(v: f64, omega: f64) -> Command {
         Command { v, omega }
@@ -381,7 +375,7 @@ mod tests {
     #[test]
     fn head_on_the_binding_constraint_is_projected_on() {
         let g = Gains::default();
-        let poses = [pose(-0.2, 0.0, 0.0), pose(0.2, 0.0, PI)];
+        let poses = [Pose::new(-0.2, 0.0, 0.0), Pose::new(0.2, 0.0, PI)];
         let mut commands = [command(0.15, 0.0), command(0.15, 0.0)];
         g.certify(DS, &poses, &[(0, 1)], &mut commands);
         let h: f64 = 0.3 * 0.3 - DS * DS;
@@ -403,16 +397,16 @@ mod tests {
     fn four_robots_get_the_robotariums_commands() {
         let g = Gains::default();
         let poses = [
-            pose(-0.3, 0.0, 0.1),
-            pose(0.3, 0.02, 3.0),
-            pose(0.0, 0.25, -1.2),
-            pose(0.05, -0.3, 1.7),
+            Pose::new(-0.3, 0.0, 0.1),
+            Pose::new(0.3, 0.02, 3.0),
+            Pose::new(0.0, 0.25, -1.2),
+            Pose::new(0.05, -0.3, 1.7),
         ];
         let goals = [
-            pose(0.6, 0.0, 0.0),
-            pose(-0.6, 0.0, PI),
-            pose(0.0, -0.6, -PI / 2.0),
-            pose(0.0, 0.6, PI / 2.0),
+            Pose::new(0.6, 0.0, 0.0),
+            Pose::new(-0.6, 0.0, PI),
+            Pose::new(0.0, -0.6, -PI / 2.0),
+            Pose::new(0.0, 0.6, PI / 2.0),
         ];
         let mut commands: Vec<Command> = poses
             .iter()
@@ -468,7 +462,7 @@ mod tests {
                 ..Gains::default()
             };
             let poses: Vec<Pose> = (0..5)
-                .map(|_| pose(rng.range(0.0, 1.5), rng.range(0.0, 1.5), rng.range(-PI, PI)))
+                .map(|_| Pose::new(rng.range(0.0, 1.5), rng.range(0.0, 1.5), rng.range(-PI, PI)))
                 .collect();
             let pairs: Vec<(usize, usize)> =
                 (0..5).flat_map(|i| (i + 1..5).map(move |j| (i, j))).collect();
@@ -505,7 +499,7 @@ mod tests {
     #[test]
     fn an_infeasible_program_stops_every_robot() {
         let g = Gains::default();
-        let poses = [pose(0.0, 0.0, 0.0), pose(0.1, 0.0, PI), pose(3.0, 3.0, 0.0)];
+        let poses = [Pose::new(0.0, 0.0, 0.0), Pose::new(0.1, 0.0, PI), Pose::new(3.0, 3.0, 0.0)];
         let mut commands = [command(0.1, 0.0), command(0.1, 0.0), command(0.1, 1.0)];
         g.certify(DS, &poses, &[(0, 1)], &mut commands);
         assert_eq!(commands, [Command::default(); 3]);
@@ -515,7 +509,7 @@ mod tests {
     #[test]
     fn a_robot_alone_keeps_its_command() {
         let mut commands = [command(3.0, 1.0)];
-        Gains::default().certify(DS, &[pose(0.0, 0.0, 0.0)], &[], &mut commands);
+        Gains::default().certify(DS, &[Pose::new(0.0, 0.0, 0.0)], &[], &mut commands);
         assert_eq!(commands, [command(3.0, 1.0)]);
     }
 

@@ -242,12 +242,6 @@ mod tests {
     use crate::testing::{assert_close, test};
     use serde_json::json;
 
-    fn pose(x: f64, y: f64, theta: f64) -> Pose {
-        Pose {
-            p: DVec2::new(x, y),
-            theta,
-        }
-    }
 
     /// The command and the field's direction at poses in every band and with other gains,
     /// against `Controller_CVF.m` (with `CVF.m`, `kw.m`, `omega_r.m`) run line by line in a
@@ -257,7 +251,7 @@ mod tests {
     /// two vectors for `logm`): within 1e-12.
     #[test]
     fn the_command_is_the_sources_at_given_poses() {
-        let goal = pose(-8.0, 9.797_174_393_178_83e-16, 4.712_388_980_384_69);
+        let goal = Pose::new(-8.0, 9.797_174_393_178_83e-16, 4.712_388_980_384_69);
         let base = Gains::default();
         let wide = Gains {
             rho: 2.0,
@@ -278,70 +272,70 @@ mod tests {
         let cases = [
             (
                 base,
-                pose(0.5, 0.1, 1.7),
+                Pose::new(0.5, 0.1, 1.7),
                 2.999_999_904_677_949_3,
                 2.999_999_904_677_949_3,
                 0.197_395_559_849_881_7,
             ),
             (
                 base,
-                pose(-0.3, 0.2, 0.0),
+                Pose::new(-0.3, 0.2, 0.0),
                 2.999_999_759_152_147,
                 -2.215_384_437_527_746_3,
                 2.553_590_050_042_224_4,
             ),
             (
                 base,
-                pose(2.0, 1.0, 0.3),
+                Pose::new(2.0, 1.0, 0.3),
                 2.999_999_989_914_560_4,
                 -0.054_930_035_746_132_866,
                 0.463_647_609_000_806_26,
             ),
             (
                 base,
-                pose(5.0, -2.0, 2.0),
+                Pose::new(5.0, -2.0, 2.0),
                 2.999_999_999_993_741,
                 -2.778_564_321_542_261_5,
                 -0.015_131_148_975_717_915,
             ),
             (
                 base,
-                pose(-7.0, 6.0, -1.0),
+                Pose::new(-7.0, 6.0, -1.0),
                 2.999_983_483_312_005,
                 -2.303_696_631_863_903,
                 -2.001_179_947_657_839,
             ),
             (
                 base,
-                pose(-6.0, -3.0, 1.2),
+                Pose::new(-6.0, -3.0, 1.2),
                 2.999_165_391_787_767_6,
                 -2.654_339_539_741_602,
                 -1.421_762_675_044_500_7,
             ),
             (
                 base,
-                pose(8.592_294_692_468_84, 12.676_570_671_638_1, 5.009_813_579_478_41),
+                Pose::new(8.592_294_692_468_84, 12.676_570_671_638_1, 5.009_813_579_478_41),
                 3.0,
                 -1.045_709_548_487_403,
                 -2.166_473_290_145_374_3,
             ),
             (
                 wide,
-                pose(-8.3, 0.4, 2.0),
+                Pose::new(-8.3, 0.4, 2.0),
                 0.802_973_868_854_288_9,
                 0.321_327_693_301_227_4,
                 -1.591_066_025_012_951_6,
             ),
             (
                 small,
-                pose(3.0, 4.0, -2.5),
+                Pose::new(3.0, 4.0, -2.5),
                 1.929_096_847_403_443,
                 -0.216_121_936_080_509_84,
                 -2.677_945_044_588_987,
             ),
             (
                 small,
-                pose(-9.0, 1.0, 0.1),
+                Pose::new(-9.0, 1.0, 0.1),
                 0.982_453_096_355_203_4,
                 -1.750_107_001_754_041_7,
                 -0.848_677_561_998_836_5,
@@ -361,7 +355,7 @@ mod tests {
     #[test]
     fn at_the_goal_the_field_is_the_goals_heading() {
         for theta in [0.0, 1.0, -2.5, 3.0] {
-            let goal = pose(2.0, -1.0, theta);
+            let goal = Pose::new(2.0, -1.0, theta);
             let g = Gains::default();
             let centre = goal.p + 8.0 * heading(theta).perp();
             let t = direction(Radii::of(&g), goal.p - centre).unwrap();
@@ -380,11 +374,11 @@ mod tests {
             rho: 1.5,
             ..Gains::default()
         };
-        let goal = pose(1.0, 2.0, 0.7);
+        let goal = Pose::new(1.0, 2.0, 0.7);
         for i in 0..40 {
             for j in 0..40 {
                 for k in 0..8 {
-                    let at = pose(
+                    let at = Pose::new(
                         -30.0 + 1.53 * f64::from(i),
                         -30.0 + 1.51 * f64::from(j),
                         -3.0 + 0.77 * f64::from(k),
@@ -415,7 +409,7 @@ mod tests {
             for j in 0..64 {
                 let q = r * heading(f64::from(j) * 0.098);
                 let t = direction(Radii::of(&g), q).unwrap();
-                let at = pose(centre.x + q.x, centre.y + q.y, atan2(t.y, t.x));
+                let at = Pose::new(centre.x + q.x, centre.y + q.y, atan2(t.y, t.x));
                 let h = heading(at.theta);
                 if atan2(t.perp_dot(h), t.dot(h)) != 0.0 {
                     continue;
@@ -432,7 +426,7 @@ mod tests {
     #[test]
     fn at_the_centre_it_keeps_its_heading() {
         let goal = Pose::default();
-        let centre = pose(0.0, 8.0, 0.4);
+        let centre = Pose::new(0.0, 8.0, 0.4);
         let (c, f) = command(&Gains::default(), centre, goal);
         assert!(c.v.is_finite() && c.v > 0.0, "{c:?}");
         assert_eq!(c.omega, 0.0);
@@ -466,14 +460,14 @@ mod tests {
                 theta: rng.heading(),
             };
             let at = match i % 4 {
-                0 => pose(goal.p.x, goal.p.y, rng.heading()),
+                0 => Pose::new(goal.p.x, goal.p.y, rng.heading()),
                 1 => {
                     let centre = goal.p + g.k2 * g.rho * heading(goal.theta).perp();
-                    pose(centre.x, centre.y, rng.heading())
+                    Pose::new(centre.x, centre.y, rng.heading())
                 }
                 _ => {
                     let p = goal.p + offset(&mut rng);
-                    pose(p.x, p.y, rng.heading())
+                    Pose::new(p.x, p.y, rng.heading())
                 }
             };
             let (c, f) = command(&g, at, goal);
@@ -483,10 +477,7 @@ mod tests {
     }
 
     fn refused(gains: serde_json::Value) -> String {
-        let serde_json::Value::Object(map) = gains else {
-            unreachable!()
-        };
-        (ENTRY.build)(&map).unwrap_err().to_string()
+        crate::planner::refused(&ENTRY, gains)
     }
 
     #[test]

@@ -246,6 +246,18 @@ impl<'de> Deserialize<'de> for Spec {
     }
 }
 
+/// The message `entry` refuses `gains` with (a JSON object), for the planners' tests.
+#[cfg(test)]
+pub(crate) fn refused(entry: &Entry, gains: Value) -> String {
+    let Value::Object(map) = gains else {
+        unreachable!("gains are an object")
+    };
+    match (entry.build)(&map) {
+        Ok(_) => panic!("{} accepted {map:?}", entry.name),
+        Err(e) => e.to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
