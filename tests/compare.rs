@@ -8,23 +8,12 @@
 
 mod common;
 
-use common::{dvf, stderr, stdout, TempFile};
+use common::{dvf, ok, stderr, TempFile};
 use dvf::compare::table::{families_table, run_rows, FamilySweep};
 use dvf::compare::{compare_with, Comparison};
 use dvf::planner::{Spec, PLANNERS};
 use dvf::sweep::Request;
 use serde_json::Value;
-
-/// `dvf args`, which must succeed with nothing on stderr: its stdout.
-fn ok(args: &[&str]) -> String {
-    let o = dvf(args);
-    assert!(
-        o.status.success() && o.stderr.is_empty(),
-        "dvf {args:?}: {}",
-        stderr(&o)
-    );
-    stdout(&o)
-}
 
 /// `dvf args`, which must fail with exit code 2 and one line on stderr starting with `start`.
 fn refused(args: &[&str], start: &str) -> String {

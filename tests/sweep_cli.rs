@@ -7,20 +7,9 @@
 
 mod common;
 
-use common::{dvf, on_a_terminal, stderr, stdout};
+use common::{dvf, ok, on_a_terminal, stderr, stdout};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
-
-/// `dvf args`, which must succeed with nothing on stderr: its stdout.
-fn ok(args: &[&str]) -> String {
-    let o = dvf(args);
-    assert!(
-        o.status.success() && o.stderr.is_empty(),
-        "dvf {args:?}: {}",
-        stderr(&o)
-    );
-    stdout(&o)
-}
 
 /// `dvf args`, which must fail with exit code 2 and one line on stderr containing every one of
 /// `needles`: that line.

@@ -19,7 +19,8 @@
 //! (10 rad/s, radius 0.016 m, track 0.105 m: at most 0.16 m/s). `wheel_velocity_limit: null`
 //! leaves only the scene's `v_max`/`ω_max`. Each robot steers alone: it avoids nothing.
 
-use super::{gains, positive, Built, Entry, Planner, World};
+use super::{gains, positive, Alone, Built, Entry};
+use crate::sim::Robot;
 use crate::controller::{Command, Evaluation};
 use crate::error::Error;
 use crate::maths::{atan2, sin_cos};
@@ -140,18 +141,12 @@ impl Gains {
 #[derive(Clone, Debug)]
 struct Clf(Gains);
 
-impl Planner for Clf {
-    fn plan(&mut self, world: &World<'_>, out: &mut [Evaluation]) {
-        for (r, e) in world.robots.iter().zip(out) {
-            *e = Evaluation {
-                command: self.0.command(r.pose, r.goal),
-                ..Evaluation::default()
-            };
+impl Alone for Clf {
+    fn evaluate(&self, r: &Robot) -> Evaluation {
+        Evaluation {
+            command: self.0.command(r.pose, r.goal),
+            ..Evaluation::default()
         }
-    }
-
-    fn clone_box(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
     }
 }
 

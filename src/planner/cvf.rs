@@ -17,7 +17,8 @@
 //! It has no avoidance of its own: other robots and obstacles meet only the simulator's
 //! shared safety barrier.
 
-use super::{gains, positive, Built, Entry, Planner, World};
+use super::{gains, positive, Alone, Built, Entry};
+use crate::sim::Robot;
 use crate::controller::{Command, Evaluation};
 use crate::error::Error;
 use crate::maths::atan2;
@@ -111,23 +112,17 @@ impl Gains {
 #[derive(Clone, Debug)]
 struct Cvf(Gains);
 
-impl Planner for Cvf {
-    fn plan(&mut self, world: &World<'_>, out: &mut [Evaluation]) {
-        for (e, r) in out.iter_mut().zip(world.robots) {
-            let (command, field) = command(&self.0, r.pose, r.goal);
-            *e = Evaluation {
-                command,
-                field,
-                goal_field: field,
-                obstacle_keep: 1.0,
-                robot_keep: 1.0,
-                virtual_obstacle: None,
-            };
+impl Alone for Cvf {
+    fn evaluate(&self, r: &Robot) -> Evaluation {
+        let (command, field) = command(&self.0, r.pose, r.goal);
+        Evaluation {
+            command,
+            field,
+            goal_field: field,
+            obstacle_keep: 1.0,
+            robot_keep: 1.0,
+            virtual_obstacle: None,
         }
-    }
-
-    fn clone_box(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
     }
 }
 

@@ -14,7 +14,8 @@
 //! # Adding a planner
 //! One file in this folder with a `pub(super) const ENTRY: Entry` (its name, what it is, its
 //! source and how to build it from its gains), and its module's name in the `planners!` line
-//! below.
+//! below. A planner that steers each robot alone implements [`Alone`] rather than
+//! [`Planner`].
 
 use crate::controller::Evaluation;
 use crate::error::Error;
@@ -49,6 +50,25 @@ pub trait Planner: Send + Sync + std::fmt::Debug {
 
     /// A copy of this planner with its state (a [`crate::Simulation`] is `Clone`).
     fn clone_box(&self) -> Box<dyn Planner>;
+}
+
+/// A planner that steers each robot alone, from its own pose and goal (it senses nothing): its
+/// [`Planner::plan`] evaluates every robot in turn.
+pub trait Alone: Clone + std::fmt::Debug + Send + Sync + 'static {
+    /// Robot `r`'s evaluation (see [`Planner::plan`]).
+    fn evaluate(&self, r: &Robot) -> Evaluation;
+}
+
+impl<T: Alone> Planner for T {
+    fn plan(&mut self, world: &World<'_>, out: &mut [Evaluation]) {
+        for (e, r) in out.iter_mut().zip(world.robots) {
+            *e = self.evaluate(r);
+        }
+    }
+
+    fn clone_box(&self) -> Box<dyn Planner> {
+        Box::new(self.clone())
+    }
 }
 
 /// What a planner sees at a step: the whole scene, with each robot's sensed robots and

@@ -14,7 +14,8 @@
 //! It avoids nothing: robots and obstacles are left to the shared safety barrier (or to
 //! nothing, with `barrier_rate: null`).
 
-use super::{gains, positive, Built, Entry, Planner, World};
+use super::{gains, positive, Alone, Built, Entry};
+use crate::sim::Robot;
 use crate::controller::{Command, Evaluation};
 use crate::error::Error;
 use crate::maths::atan2;
@@ -122,19 +123,13 @@ struct MoveToPose {
     g: Gains,
 }
 
-impl Planner for MoveToPose {
-    fn plan(&mut self, world: &World<'_>, out: &mut [Evaluation]) {
-        for (r, e) in world.robots.iter().zip(out) {
-            let d = r.goal.p - r.pose.p;
-            *e = Evaluation {
-                command: self.g.command(d.x, d.y, r.pose.theta, r.goal.theta),
-                ..Evaluation::default()
-            };
+impl Alone for MoveToPose {
+    fn evaluate(&self, r: &Robot) -> Evaluation {
+        let d = r.goal.p - r.pose.p;
+        Evaluation {
+            command: self.g.command(d.x, d.y, r.pose.theta, r.goal.theta),
+            ..Evaluation::default()
         }
-    }
-
-    fn clone_box(&self) -> Box<dyn Planner> {
-        Box::new(self.clone())
     }
 }
 

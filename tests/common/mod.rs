@@ -1,5 +1,5 @@
 //! What the tests of the `dvf` binary share (tests/cli.rs, tests/simulate.rs,
-//! tests/sweep_cli.rs): running it, reading what it wrote, and temporary files.
+//! tests/sweep_cli.rs, tests/compare.rs): running it, reading what it wrote, and temporary files.
 // Each test file uses a part of this module.
 #![allow(dead_code)]
 
@@ -18,6 +18,17 @@ pub fn dvf(args: &[&str]) -> Output {
         .env("RUST_BACKTRACE", "1")
         .output()
         .expect("the dvf binary runs")
+}
+
+/// `dvf args`, which must succeed with nothing on stderr: its stdout.
+pub fn ok(args: &[&str]) -> String {
+    let o = dvf(args);
+    assert!(
+        o.status.success() && o.stderr.is_empty(),
+        "dvf {args:?}: {}",
+        stderr(&o)
+    );
+    stdout(&o)
 }
 
 /// What a run wrote on standard output.
